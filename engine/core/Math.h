@@ -1,0 +1,28 @@
+#pragma once
+// Math aliases. Particle state is float (memory bandwidth); rigid bodies, time and scene values
+// are double.
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+namespace airtrap {
+
+using Vec3f = Eigen::Vector3f;
+using Vec3d = Eigen::Vector3d;
+using Vec3i = Eigen::Vector3i;
+using Mat3d = Eigen::Matrix3d;
+using Quatd = Eigen::Quaterniond;
+
+//! Axis-aligned box in double precision.
+struct Aabb {
+    Vec3d min = Vec3d::Zero();
+    Vec3d max = Vec3d::Zero();
+
+    Vec3d size() const { return max - min; }
+    Vec3d center() const { return 0.5 * (min + max); }
+    bool contains(const Vec3d& p) const {
+        return (p.array() >= min.array()).all() && (p.array() <= max.array()).all();
+    }
+    double volume() const { return size().prod(); }
+};
+
+} // namespace airtrap

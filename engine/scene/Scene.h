@@ -1,0 +1,83 @@
+#pragma once
+// The scene as plain data. Every field here is declared once, with its JSON key, label, unit,
+// range, default and help, in SceneSchema; the JSON reader, `--set`, docs/SCENE_FORMAT.md and the
+// editor's parameter panel all read that declaration. The defaults below mirror it so that a
+// default-constructed Scene is valid.
+#include "core/Math.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace airtrap {
+
+//! WCSPH settings (paper §3.1, DESIGN §4).
+struct SolverSettings {
+    double particleSpacing = 0.02;  //!< m, initial distance between water particles
+    double supportFactor = 2.0;     //!< kernel support radius = supportFactor × spacing
+    double restDensity = 1000.0;    //!< kg/m³, ρ₀
+    double maxSpeed = 10.0;         //!< m/s, u_max; speed of sound c = 10 u_max (paper §3.1)
+    double viscosityAlpha = 0.1;    //!< Monaghan artificial viscosity α
+    double wallViscosity = 0.05;    //!< artificial viscosity coefficient at solid walls (friction)
+    double wallRestitution = 0.0;   //!< ε of the contact impulse against solid walls (eq. 4)
+    double cflFactor = 0.3;         //!< λ in Δt = λ h / (c + |v|max)
+    int shepardInterval = 30;       //!< steps between Shepard density re-initialisations (0 = off)
+    double maxDensityError = 0.2;   //!< stop the bake when |ρ/ρ₀ − 1| exceeds this (blow-up guard)
+    Vec3d gravity = Vec3d(0.0, -9.81, 0.0); //!< m/s²
+};
+
+//! Frame range and rate of the bake. Frame 1 is the initial state at t = 0; frame n is at
+//! t = (n − 1) / fps.
+struct FrameSettings {
+    double fps = 30.0;
+    int endFrame = 60;
+};
+
+//! The static open-top tank. Its inside is the water's world; the domain extends `headroom`
+//! metres above its rim for splashes.
+struct ContainerSettings {
+    Vec3d min = Vec3d(0.0, 0.0, 0.0);
+    Vec3d max = Vec3d(1.0, 1.0, 1.0);
+    double headroom = 0.5; //!< m above the rim still inside the simulation domain
+};
+
+//! A box of water at rest (or moving) at t = 0, filled on the particle lattice.
+struct FluidBlock {
+    std::string name = "Water";
+    Vec3d min = Vec3d(0.0, 0.0, 0.0);
+    Vec3d max = Vec3d(0.5, 0.5, 0.5);
+    Vec3d initialVelocity = Vec3d::Zero();
+};
+
+//! A static box obstacle, axis-aligned in this version.
+struct BoxObstacle {
+    std::string name = "Obstacle";
+    Vec3d center = Vec3d(0.5, 0.25, 0.5);
+    Vec3d size = Vec3d(0.2, 0.5, 0.2);
+};
+
+struct Scene {
+    static constexpr int kFormatVersion = 1;
+
+    std::string name = "Untitled";
+    std::uint64_t seed = 1;
+    SolverSettings solver;
+    FrameSettings frames;
+    ContainerSettings container;
+    std::vector<FluidBlock> fluidBlocks;
+    std::vector<BoxObstacle> obstacles;
+
+    //! Where the scene was read from (not saved); used in messages.
+    std::string sourcePath;
+
+    //! Simulation domain: the container plus its headroom.
+    Aabb domain() const {
+        Aabb box{container.min, container.max};
+        box.max.y() += container.headroom;
+        return box;
+    }
+    double supportRadius() const { return solver.supportFactor * solver.particleSpacing; }
+    double frameTime(int frame) const { return (frame - 1) / frames.fps; }
+};
+
+} // namespace airtrap

@@ -1,0 +1,47 @@
+#pragma once
+// The simulation: owns the state and steps it in the order of the paper's Table 1.
+#include "core/Interrupter.h"
+#include "scene/Scene.h"
+#include "sim/FrameStats.h"
+#include "sim/SimulationState.h"
+
+#include <memory>
+
+namespace airtrap {
+
+class WcsphSolver;
+
+class Simulation {
+public:
+    //! Builds the initial state (frame 1, t = 0) from the scene. The scene must be valid.
+    explicit Simulation(Scene scene);
+    //! Continues from a cached state of the same scene.
+    Simulation(Scene scene, SimulationState resumeFrom);
+    ~Simulation();
+    Simulation(const Simulation&) = delete;
+    Simulation& operator=(const Simulation&) = delete;
+
+    const Scene& scene() const { return scene_; }
+    const SimulationState& state() const { return state_; }
+    int frame() const { return state_.frame; }
+
+    enum class Advance { FrameDone, Interrupted };
+    //! Steps until the next frame's time is reached exactly. Checks the interrupter after every
+    //! step; when it asks to stop, returns Interrupted and the state is mid-frame (not to be
+    //! cached). Throws Error(SimulationBlowUp) naming the frame and likely cause.
+    Advance advanceFrame(Interrupter& interrupter);
+
+    //! Statistics of the last completed frame (or of the initial state).
+    const FrameStats& lastFrameStats() const { return lastFrameStats_; }
+
+    //! The solver, for benchmarks and tests that step it directly.
+    WcsphSolver& solver() { return *solver_; }
+
+private:
+    Scene scene_;
+    SimulationState state_;
+    FrameStats lastFrameStats_;
+    std::unique_ptr<WcsphSolver> solver_;
+};
+
+} // namespace airtrap
