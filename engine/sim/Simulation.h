@@ -10,6 +10,7 @@
 namespace airtrap {
 
 class WcsphSolver;
+struct StepReport;
 
 class Simulation {
 public:
@@ -38,6 +39,10 @@ public:
     WcsphSolver& solver() { return *solver_; }
 
 private:
+    //! Throws Error(SimulationBlowUp) naming the frame and the likely cause.
+    void checkHealth(const StepReport& report, int frame, std::size_t lost,
+                     std::size_t particlesAtStart) const;
+
     Scene scene_;
     SimulationState state_;
     FrameStats lastFrameStats_;

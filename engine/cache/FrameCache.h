@@ -1,0 +1,96 @@
+#pragma once
+// A cache folder (DESIGN §5, docs/CACHE_FORMAT.md): manifest.json plus one frame_NNNN.atf per
+// frame. Used by the bake loop (write, resume), the CLI (info, export) and the editor (timeline).
+//
+// Consistency: every file is replaced atomically, and the manifest is only ever updated after the
+// frame file it lists is complete, so an interrupted bake (crash, Ctrl-C, disk full) leaves a
+// cache whose listed frames are all whole. A frame that is damaged anyway is reported by name
+// and never loaded.
+//
+// Threads: one object may be shared — its manifest is guarded by a mutex and frame files are
+// read without it (a file being replaced is safe to read because of rename). The intended use is
+// still one object per thread: the bake thread writes through its own, the editor's loader thread
+// open()s another and calls reload() to see new frames. A reader that hits a frame the writer has
+// just dropped (truncateAfter) gets CacheCorrupt and should reload() before reporting it.
+#include "cache/CacheManifest.h"
+#include "cache/FrameFile.h"
+
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace airtrap {
+
+class FrameCache {
+public:
+    //! Creates (with parents) or re-initialises `dir` as an empty cache with status "baking".
+    //! A folder that already holds a cache is refused (InvalidInput) unless `overwrite`; then only
+    //! manifest.json, frame_*.atf and the cache's own *.tmp files are deleted, nothing else.
+    //! Cannot create or write → Error(Io) naming the path.
+    static FrameCache create(const std::string& dir, const nlohmann::json& sceneJson,
+                             const std::string& parameterHash, double fps, bool overwrite = false);
+    //! Opens an existing cache. No manifest → InvalidInput "not an Airtrap cache: ..."; a
+    //! malformed one → CacheCorrupt naming the field.
+    static FrameCache open(const std::string& dir);
+    //! True when `dir` contains a manifest.json (whether or not it is valid).
+    static bool isCache(const std::string& dir);
+
+    FrameCache(FrameCache&& other) noexcept;
+    FrameCache& operator=(FrameCache&& other) noexcept;
+    FrameCache(const FrameCache&) = delete;
+    FrameCache& operator=(const FrameCache&) = delete;
+
+    //! Writes frame `state.frame` atomically, then lists it in the manifest (replacing an older
+    //! entry). Error(Io) (disk full, permission denied) leaves a consistent cache: a new frame is
+    //! not listed; a listed frame being re-written is unlisted first, so the manifest never
+    //! describes a file that was replaced.
+    void writeFrame(const SimulationState& state, const FrameStats& stats);
+    //! Loads a listed frame, verified against its own header and checksums and against the
+    //! manifest's size and CRC. Damaged or missing file → CacheCorrupt naming it; a frame not
+    //! listed → InvalidInput.
+    FrameData readFrame(int frame) const;
+
+    //! Listed frame numbers, ascending.
+    std::vector<int> frames() const;
+    bool hasFrame(int frame) const;
+    //! The manifest as last read or written. Not safe while another thread writes through this
+    //! object; use manifestSnapshot() then.
+    const CacheManifest& manifest() const { return manifest_; }
+    CacheManifest manifestSnapshot() const;
+    //! Re-reads manifest.json, e.g. to see frames another FrameCache object has written.
+    void reload();
+
+    const std::string& directory() const { return dir_; }
+    std::string manifestPath() const;
+    //! Where frame `frame` is stored: <dir>/frame_%04d.atf.
+    std::string framePath(int frame) const;
+    //! "frame_0001.atf" (4 digits, more when needed).
+    static std::string frameFileName(int frame);
+
+    //! Sets "baking", "complete", "stopped" or "failed: <reason>" and writes the manifest.
+    void setStatus(const std::string& status);
+
+    //! The newest listed frame that fully verifies (0 if none). Each damaged frame met on the
+    //! way down is appended to `problems` as "<path>: <reason>". Io errors propagate: an
+    //! unreadable file is not evidence of a bad frame.
+    int lastGoodFrame(std::vector<std::string>* problems = nullptr) const;
+    //! Verifies every listed frame; returns "<path>: <reason>" per damaged one.
+    std::vector<std::string> verify() const;
+    //! Unlists and deletes every frame after `frame` (manifest first, then files), including
+    //! unlisted frame files left by an interrupted write.
+    void truncateAfter(int frame);
+
+private:
+    FrameCache(std::string dir, CacheManifest manifest);
+    CacheFrameEntry entryOf(int frame) const;
+    //! Applies `change` to a copy of the manifest, writes it, and only then adopts it, so memory
+    //! and disk agree even when the write fails. Call with mutex_ held.
+    template <typename Change>
+    void updateManifest(Change&& change);
+
+    std::string dir_;
+    CacheManifest manifest_;
+    mutable std::mutex mutex_;
+};
+
+} // namespace airtrap

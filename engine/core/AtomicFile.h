@@ -1,0 +1,30 @@
+#pragma once
+// Crash-safe file replacement: a reader sees either the old file or the complete new one, never a
+// half-written one. The cache relies on this for frames and the manifest (DESIGN §5, §8).
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace airtrap {
+
+class AtomicFile {
+public:
+    //! Writes `size` bytes to a unique temporary file next to `path`, fsyncs it, renames it over
+    //! `path` and fsyncs the folder. On failure the temporary is removed, `path` is left as it
+    //! was, and Error(Io) names `path` and the OS reason ("disk full", "permission denied").
+    static void write(const std::string& path, const void* data, std::size_t size);
+    static void write(const std::string& path, const std::vector<std::uint8_t>& bytes);
+    static void write(const std::string& path, const std::string& text);
+
+    //! Reads a whole file. Throws Error(Io) naming `path` and the OS reason.
+    static std::vector<std::uint8_t> read(const std::string& path);
+
+    //! "<action> <path>: <reason>", with errno translated into words a user acts on.
+    static std::string errorMessage(const std::string& action, const std::string& path, int err);
+
+    //! True when `name` is one of the temporaries write() creates (they end in ".tmp").
+    static bool isTemporaryName(const std::string& name);
+};
+
+} // namespace airtrap

@@ -1,0 +1,205 @@
+#include "scene/SceneValidator.h"
+
+#include "core/Error.h"
+#include "scene/ParameterCodec.h"
+#include "scene/SceneSchema.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace airtrap {
+namespace {
+
+//! Coordinates closer than this count as equal: values typed as decimals are not exact.
+constexpr double kTolerance = 1e-9;
+constexpr const char* kAxes[] = {"x", "y", "z"};
+
+std::string number(double value) {
+    return ParameterCodec::formatNumber(value);
+}
+
+std::string blockLabel(const char* section, std::size_t index, const std::string& name) {
+    return std::string(section) + "[" + std::to_string(index) + "] (" +
+           ParameterCodec::formatValue(name) + ")";
+}
+
+Aabb obstacleBox(const BoxObstacle& obstacle) {
+    return {obstacle.center - 0.5 * obstacle.size, obstacle.center + 0.5 * obstacle.size};
+}
+
+bool overlap(const Aabb& a, const Aabb& b) {
+    for (int axis = 0; axis < 3; ++axis)
+        if (std::max(a.min[axis], b.min[axis]) >= std::min(a.max[axis], b.max[axis]) - kTolerance)
+            return false;
+    return true;
+}
+
+class Checker {
+public:
+    explicit Checker(const Scene& scene)
+        : scene_(scene), source_(scene.sourcePath.empty() ? "scene" : scene.sourcePath) {}
+
+    SceneIssues run() {
+        checkFields();
+        // Cross-field rules assume fields in range; with bad fields they would only add noise.
+        if (!issues_.ok())
+            return issues_;
+        // Inside an inverted container nothing fits; saying so for every block is noise.
+        const bool containerValid = checkContainer();
+        checkFluidBlocks(containerValid);
+        if (containerValid)
+            checkObstacles();
+        checkParticleCount();
+        checkOverlaps();
+        return issues_;
+    }
+
+private:
+    void error(const std::string& message) { issues_.errors.push_back(source_ + ": " + message); }
+    void warning(const std::string& message) {
+        issues_.warnings.push_back(source_ + ": " + message);
+    }
+
+    void checkFields() {
+        for (const SchemaSection& section : SceneSchema::sections())
+            for (std::size_t element = 0; element < section.elementCount(scene_); ++element)
+                for (const BoundParameter& parameter : section.parameters) {
+                    const std::string path =
+                        SceneSchema::pathOf(section, element, parameter.declaration.key);
+                    const std::string problem = ParameterCodec::check(
+                        parameter.declaration, parameter.get(scene_, element), path);
+                    if (!problem.empty())
+                        error(problem);
+                }
+    }
+
+    bool checkContainer() {
+        const ContainerSettings& container = scene_.container;
+        bool valid = true;
+        for (int axis = 0; axis < 3; ++axis)
+            if (container.min[axis] >= container.max[axis]) {
+                error(std::string("container: min.") + kAxes[axis] + " = " +
+                      number(container.min[axis]) + " must be less than max." + kAxes[axis] +
+                      " = " + number(container.max[axis]));
+                valid = false;
+            }
+        return valid;
+    }
+
+    //! Reports where `box` sticks out of `bounds`, one message per face.
+    void checkInside(const std::string& label, const Aabb& box, const Aabb& bounds,
+                     const std::string& boundsName) {
+        for (int axis = 0; axis < 3; ++axis) {
+            const std::string a = kAxes[axis];
+            if (box.min[axis] < bounds.min[axis] - kTolerance)
+                error(label + " reaches outside the " + boundsName + ": min." + a + " = " +
+                      number(box.min[axis]) + " < " + number(bounds.min[axis]));
+            if (box.max[axis] > bounds.max[axis] + kTolerance)
+                error(label + " reaches outside the " + boundsName + ": max." + a + " = " +
+                      number(box.max[axis]) + " > " + number(bounds.max[axis]));
+        }
+    }
+
+    void checkFluidBlocks(bool containerValid) {
+        if (scene_.fluidBlocks.empty())
+            error("fluid_blocks is empty; a scene needs at least one fluid block");
+        const double spacing = scene_.solver.particleSpacing;
+        for (std::size_t i = 0; i < scene_.fluidBlocks.size(); ++i) {
+            const FluidBlock& block = scene_.fluidBlocks[i];
+            const std::string label = blockLabel("fluid_blocks", i, block.name);
+            for (int axis = 0; axis < 3; ++axis) {
+                const std::string a = kAxes[axis];
+                if (block.min[axis] >= block.max[axis])
+                    error(label + ": min." + a + " = " + number(block.min[axis]) +
+                          " must be less than max." + a + " = " + number(block.max[axis]));
+                else if (block.max[axis] - block.min[axis] < spacing)
+                    warning(label + " is thinner than solver.particle_spacing = " +
+                            number(spacing) + " m along " + a + "; it may hold no particles");
+            }
+            // The domain, not just the tank: water may start above the rim and fall in.
+            if (containerValid)
+                checkInside(label, {block.min, block.max}, scene_.domain(),
+                            "domain (container plus headroom)");
+        }
+    }
+
+    void checkObstacles() {
+        for (std::size_t i = 0; i < scene_.obstacles.size(); ++i)
+            checkInside(blockLabel("obstacles", i, scene_.obstacles[i].name),
+                        obstacleBox(scene_.obstacles[i]), scene_.domain(),
+                        "domain (container plus headroom)");
+    }
+
+    void checkParticleCount() {
+        const double spacing = scene_.solver.particleSpacing;
+        double volume = 0.0;
+        for (const FluidBlock& block : scene_.fluidBlocks)
+            volume += (block.max - block.min).cwiseMax(0.0).prod();
+        const double particles = volume / (spacing * spacing * spacing);
+        if (particles <= SceneValidator::kMaxParticles)
+            return;
+        char text[256];
+        std::snprintf(text, sizeof text,
+                      "the fluid blocks hold about %.1f million particles at "
+                      "solver.particle_spacing = %s m; the limit is %.0f million. Use a spacing of "
+                      "at least %.2g m or smaller fluid blocks",
+                      particles / 1e6, number(spacing).c_str(), SceneValidator::kMaxParticles / 1e6,
+                      std::cbrt(volume / SceneValidator::kMaxParticles) * 1.005);
+        error(text);
+    }
+
+    void checkOverlaps() {
+        const auto& blocks = scene_.fluidBlocks;
+        for (std::size_t i = 0; i < blocks.size(); ++i) {
+            const Aabb box{blocks[i].min, blocks[i].max};
+            const std::string label = blockLabel("fluid_blocks", i, blocks[i].name);
+            for (std::size_t j = i + 1; j < blocks.size(); ++j)
+                if (overlap(box, {blocks[j].min, blocks[j].max}))
+                    warning(label + " overlaps " + blockLabel("fluid_blocks", j, blocks[j].name) +
+                            "; the overlap is filled twice, at double density");
+            for (std::size_t j = 0; j < scene_.obstacles.size(); ++j)
+                if (overlap(box, obstacleBox(scene_.obstacles[j])))
+                    warning(label + " overlaps " +
+                            blockLabel("obstacles", j, scene_.obstacles[j].name) +
+                            "; the water in the overlap starts inside a solid");
+        }
+    }
+
+    const Scene& scene_;
+    std::string source_;
+    SceneIssues issues_;
+};
+
+} // namespace
+
+SceneIssues SceneValidator::check(const Scene& scene) {
+    return Checker(scene).run();
+}
+
+std::vector<std::string> SceneValidator::ruleDescriptions() {
+    return {
+        "Every value lies in its declared range (the tables above).",
+        "`container.min` is below `container.max` on every axis.",
+        "There is at least one fluid block; each has `min` below `max` on every axis and lies "
+        "inside the domain: the container plus `headroom` above its rim.",
+        "Every obstacle lies inside the domain: the container plus `headroom` above its rim.",
+        "The fluid blocks hold at most " + number(kMaxParticles / 1e6) +
+            " million particles (their total volume / `particle_spacing`³).",
+        "Warnings, which do not stop a bake: fluid blocks that overlap each other or an "
+        "obstacle, and fluid blocks thinner than `particle_spacing`.",
+    };
+}
+
+std::vector<std::string> validateScene(const Scene& scene) {
+    SceneIssues issues = SceneValidator::check(scene);
+    if (!issues.ok()) {
+        std::string message;
+        for (const std::string& line : issues.errors)
+            message += (message.empty() ? "" : "\n") + line;
+        throw Error(ErrorKind::InvalidScene, message);
+    }
+    return issues.warnings;
+}
+
+} // namespace airtrap

@@ -1,0 +1,141 @@
+#include "sim/Simulation.h"
+
+#include "core/Error.h"
+#include "sim/SceneSetup.h"
+#include "sph/WcsphSolver.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+namespace airtrap {
+
+namespace {
+
+//! Steps shorter than this mean the time-step controller has given up: accelerations exploded.
+constexpr double kMinTimeStep = 1e-9;
+//! A frame that loses more than this share of its particles through the domain's walls is a
+//! blow-up, not a splash.
+constexpr double kMaxLostShare = 0.05;
+
+FrameStats measure(const ParticleSet& fluid) {
+    FrameStats stats;
+    using Range = tbb::blocked_range<std::size_t>;
+    struct Sums {
+        double maxSpeed = 0.0;
+        double density = 0.0;
+    };
+    // Deterministic reduce: the same split and the same order of additions on every run.
+    const Sums sums = tbb::parallel_deterministic_reduce(
+        Range(0, fluid.size(), 4096), Sums{},
+        [&](const Range& r, Sums acc) {
+            for (std::size_t i = r.begin(); i != r.end(); ++i) {
+                acc.maxSpeed = std::max(acc.maxSpeed, double(fluid.velocities[i].norm()));
+                acc.density += fluid.densities[i];
+            }
+            return acc;
+        },
+        [](Sums a, const Sums& b) {
+            a.maxSpeed = std::max(a.maxSpeed, b.maxSpeed);
+            a.density += b.density;
+            return a;
+        });
+    stats.maxSpeed = sums.maxSpeed;
+    stats.meanDensity = fluid.empty() ? 0.0 : sums.density / double(fluid.size());
+    return stats;
+}
+
+std::string percent(double fraction) {
+    std::ostringstream out;
+    out.precision(3);
+    out << 100.0 * fraction << " %";
+    return out.str();
+}
+
+} // namespace
+
+Simulation::Simulation(Scene scene) : scene_(std::move(scene)) {
+    solver_ = std::make_unique<WcsphSolver>(scene_.solver, scene_.domain(),
+                                            SceneSetup::buildBodies(scene_));
+    SceneSetup::fillFluid(scene_, *solver_, state_);
+    lastFrameStats_ = measure(state_.fluid);
+}
+
+Simulation::Simulation(Scene scene, SimulationState resumeFrom)
+    : scene_(std::move(scene)), state_(std::move(resumeFrom)) {
+    solver_ = std::make_unique<WcsphSolver>(scene_.solver, scene_.domain(),
+                                            SceneSetup::buildBodies(scene_));
+    lastFrameStats_ = measure(state_.fluid);
+}
+
+Simulation::~Simulation() = default;
+
+Simulation::Advance Simulation::advanceFrame(Interrupter& interrupter) {
+    const int nextFrame = state_.frame + 1;
+    const double target = scene_.frameTime(nextFrame);
+    const double start = state_.time;
+    const std::size_t particlesAtStart = state_.fluid.size();
+    std::size_t lost = 0;
+    std::uint64_t steps = 0;
+    solver_->phases().reset();
+    const auto wallStart = std::chrono::steady_clock::now();
+
+    while (state_.time < target) {
+        const double remaining = target - state_.time;
+        const StepReport report = solver_->step(state_, remaining);
+        // The last step lands on the frame time exactly, not on an accumulated sum.
+        state_.time = report.timeStep == remaining ? target : state_.time + report.timeStep;
+        lost += report.removedParticles;
+        ++steps;
+        checkHealth(report, nextFrame, lost, particlesAtStart);
+        if (state_.time < target) {
+            if (interrupter.wasInterrupted(100.0 * (state_.time - start) / (target - start)))
+                return Advance::Interrupted;
+        }
+    }
+
+    state_.frame = nextFrame;
+    lastFrameStats_ = measure(state_.fluid);
+    lastFrameStats_.stepsInFrame = steps;
+    lastFrameStats_.wallSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
+    for (int phase = 0; phase < StepPhases::Count; ++phase)
+        lastFrameStats_.phaseSeconds[std::string(StepPhases::kNames[phase])] =
+            solver_->phases().seconds(static_cast<StepPhases::Phase>(phase));
+    return Advance::FrameDone;
+}
+
+void Simulation::checkHealth(const StepReport& report, int frame, std::size_t lost,
+                             std::size_t particlesAtStart) const {
+    const std::string where = "frame " + std::to_string(frame) + " (t = " +
+                              std::to_string(state_.time) + " s): ";
+    if (report.nonFinite)
+        throw Error(ErrorKind::SimulationBlowUp,
+                    where + "the simulation produced NaN or infinite values. Likely cause: a time "
+                            "step too large for the forces (lower solver.cfl_factor) or bodies "
+                            "overlapping the water at t = 0.");
+    if (report.maxDensityDeviation > scene_.solver.maxDensityError)
+        throw Error(ErrorKind::SimulationBlowUp,
+                    where + "density error " + percent(report.maxDensityDeviation) +
+                        " exceeds solver.max_density_error (" +
+                        percent(scene_.solver.maxDensityError) + "). Likely cause: the water " +
+                        "moves at " + std::to_string(report.maxSpeed) +
+                        " m/s, too fast for solver.max_speed = " +
+                        std::to_string(scene_.solver.maxSpeed) +
+                        " m/s (raise it), or solver.cfl_factor is too large.");
+    if (lost > std::max<std::size_t>(10, std::size_t(kMaxLostShare * particlesAtStart)))
+        throw Error(ErrorKind::SimulationBlowUp,
+                    where + std::to_string(lost) +
+                        " particles left the domain in one frame. Likely cause: the water "
+                        "exploded (lower solver.cfl_factor, raise solver.max_speed) or the "
+                        "container's headroom is too small for the splash.");
+    if (report.timeStep < kMinTimeStep && report.timeStep < state_.time)
+        throw Error(ErrorKind::SimulationBlowUp,
+                    where + "the time step collapsed below 1 ns: accelerations are exploding. "
+                            "Likely cause: overlapping bodies or particles at t = 0.");
+}
+
+} // namespace airtrap

@@ -1,0 +1,51 @@
+#pragma once
+// Cubic spline kernel (Monaghan 1992) written with the support radius H = 2h:
+//   q = r/H, k = 8/(πH³), W = k(6q³ − 6q² + 1) for q ≤ ½, 2k(1 − q)³ for q ≤ 1, 0 beyond.
+// It equals the classic σ = 1/(πh³) form with support 2h (METHOD-NOTES §2).
+#include "core/Math.h"
+
+namespace airtrap {
+
+class CubicSplineKernel {
+public:
+    explicit CubicSplineKernel(float supportRadius);
+
+    float supportRadius() const { return radius_; }
+    //! The smoothing length h = H/2 that artificial viscosity and time-step criteria use.
+    float smoothingLength() const { return 0.5f * radius_; }
+
+    float value(float r) const {
+        const float q = r * invRadius_;
+        if (q <= 0.5f)
+            return k_ * (6.0f * q * q * (q - 1.0f) + 1.0f);
+        if (q <= 1.0f) {
+            const float t = 1.0f - q;
+            return 2.0f * k_ * t * t * t;
+        }
+        return 0.0f;
+    }
+
+    //! ∇ᵢW(xᵢ − xⱼ) for the offset d = xᵢ − xⱼ of length r > 0 (zero at r = 0 and beyond H).
+    Vec3f gradient(const Vec3f& d, float r) const {
+        const float q = r * invRadius_;
+        if (r <= 1e-9f || q > 1.0f)
+            return Vec3f::Zero();
+        // dW/dr divided by r, so the gradient is this factor times d.
+        float dWdrOverR;
+        if (q <= 0.5f)
+            dWdrOverR = l_ * (3.0f * q - 2.0f) * invRadius_ * invRadius_;
+        else {
+            const float t = 1.0f - q;
+            dWdrOverR = -l_ * t * t * invRadius_ / r;
+        }
+        return dWdrOverR * d;
+    }
+
+private:
+    float radius_;
+    float invRadius_;
+    float k_; //!< 8/(πH³)
+    float l_; //!< 48/(πH³): derivative prefactor
+};
+
+} // namespace airtrap

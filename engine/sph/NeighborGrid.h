@@ -1,0 +1,75 @@
+#pragma once
+// Uniform grid with cell size = kernel support radius, over the simulation domain plus one ghost
+// layer on every side (so the 27-cell neighbourhood of any interior cell exists without bounds
+// checks). Particles are counting-sorted by cell with x varying fastest, so each of the nine
+// (y, z) rows of a neighbourhood is one contiguous range of the sorted arrays: neighbour loops
+// stream memory and need no stored neighbour lists. Rebuilt every step (Ihmsen et al. 2011 call
+// this "index sort"). The sort is stable, so the result depends only on the input order.
+#include "core/Math.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace airtrap {
+
+class NeighborGrid {
+public:
+    NeighborGrid(const Aabb& domain, float cellSize);
+
+    //! Sorts the points by cell. Afterwards `order()[k]` is the input index of the k-th sorted
+    //! point; points outside the domain are dropped and counted in `outsideCount()`.
+    void build(const std::vector<Vec3f>& positions);
+
+    const std::vector<std::uint32_t>& order() const { return order_; }
+    std::size_t sortedCount() const { return order_.size(); }
+    std::size_t outsideCount() const { return outside_; }
+
+    //! Calls visit(begin, end) for the nine contiguous ranges of sorted indices that cover the
+    //! 27 cells around the cell containing `x` (which must lie inside the domain).
+    template <class Visit>
+    void forEachNeighborRange(const Vec3f& x, Visit&& visit) const {
+        const Vec3i c = cellCoordinates(x);
+        for (int dz = -1; dz <= 1; ++dz)
+            for (int dy = -1; dy <= 1; ++dy) {
+                const int rowStart = linearIndex(c.x() - 1, c.y() + dy, c.z() + dz);
+                visit(cellStart_[rowStart], cellStart_[rowStart + 3]);
+            }
+    }
+
+    Vec3i cellCoordinates(const Vec3f& x) const {
+        const Vec3f g = (x - origin_) * invCellSize_;
+        return Vec3i(clampAxis(g.x(), 0), clampAxis(g.y(), 1), clampAxis(g.z(), 2));
+    }
+    int linearIndex(int i, int j, int k) const { return i + dims_.x() * (j + dims_.y() * k); }
+
+    //! Cells per axis, ghost layers included.
+    const Vec3i& dimensions() const { return dims_; }
+    float cellSize() const { return cellSize_; }
+    //! World position of the lower corner of cell (0, 0, 0), a ghost cell.
+    const Vec3f& origin() const { return origin_; }
+    //! Number of sorted points in a cell: the occupancy the air-pocket flood fill reads.
+    std::uint32_t cellCount(int linear) const {
+        return cellStart_[linear + 1] - cellStart_[linear];
+    }
+    std::size_t cellTotal() const { return cellStart_.size() - 1; }
+    std::size_t allocatedBytes() const;
+
+private:
+    int clampAxis(float g, int axis) const {
+        const int i = static_cast<int>(g);
+        return i < 1 ? 1 : (i > dims_[axis] - 2 ? dims_[axis] - 2 : i);
+    }
+    bool insideDomain(const Vec3f& x) const;
+
+    Aabb domain_;
+    float cellSize_;
+    float invCellSize_;
+    Vec3f origin_;
+    Vec3i dims_;
+    std::vector<std::uint32_t> cellStart_; //!< cellTotal() + 1 offsets into the sorted order
+    std::vector<std::uint32_t> cellOfPoint_;
+    std::vector<std::uint32_t> order_;
+    std::size_t outside_ = 0;
+};
+
+} // namespace airtrap

@@ -1,0 +1,48 @@
+#pragma once
+// Wall-clock seconds spent in each phase of a step, accumulated until reset. The names are the
+// keys of `phase_ms` in airtrap-bench and of `timing` in `info --json`.
+#include <array>
+#include <chrono>
+#include <string_view>
+
+namespace airtrap {
+
+class StepPhases {
+public:
+    enum Phase { Neighbours, Density, Forces, Integrate, Count };
+
+    static constexpr std::array<std::string_view, Count> kNames = {"neighbours", "density",
+                                                                   "forces", "integrate"};
+
+    //! Times one phase for as long as it lives.
+    class Scope {
+    public:
+        Scope(StepPhases& phases, Phase phase)
+            : phases_(phases), phase_(phase), start_(std::chrono::steady_clock::now()) {}
+        ~Scope() {
+            const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start_;
+            phases_.seconds_[phase_] += elapsed.count();
+        }
+        Scope(const Scope&) = delete;
+        Scope& operator=(const Scope&) = delete;
+
+    private:
+        StepPhases& phases_;
+        Phase phase_;
+        std::chrono::steady_clock::time_point start_;
+    };
+
+    double seconds(Phase phase) const { return seconds_[phase]; }
+    double totalSeconds() const {
+        double total = 0.0;
+        for (double s : seconds_)
+            total += s;
+        return total;
+    }
+    void reset() { seconds_.fill(0.0); }
+
+private:
+    std::array<double, Count> seconds_{};
+};
+
+} // namespace airtrap

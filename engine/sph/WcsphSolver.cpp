@@ -1,0 +1,297 @@
+#include "sph/WcsphSolver.h"
+
+#include "rigid/BoundarySampler.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
+
+namespace airtrap {
+
+namespace {
+
+constexpr double kTaitGamma = 7.0;
+constexpr std::size_t kGrain = 1024;
+
+using Range = tbb::blocked_range<std::size_t>;
+
+//! Maximum over [0, n) of f(i); max is exact in any order, so the result is deterministic.
+template <class F>
+double parallelMax(std::size_t n, F&& f) {
+    return tbb::parallel_reduce(
+        Range(0, n, kGrain), 0.0,
+        [&](const Range& r, double best) {
+            for (std::size_t i = r.begin(); i != r.end(); ++i)
+                best = std::max(best, static_cast<double>(f(i)));
+            return best;
+        },
+        [](double a, double b) { return std::max(a, b); });
+}
+
+Aabb expanded(const Aabb& box, double margin) {
+    return {box.min - Vec3d::Constant(margin), box.max + Vec3d::Constant(margin)};
+}
+
+} // namespace
+
+WcsphSolver::WcsphSolver(const SolverSettings& settings, const Aabb& domain,
+                         std::vector<RigidBody> bodies)
+    : settings_(settings),
+      kernel_(static_cast<float>(settings.supportFactor * settings.particleSpacing)),
+      spacing_(static_cast<float>(settings.particleSpacing)),
+      mass_(static_cast<float>(settings.restDensity * std::pow(settings.particleSpacing, 3))),
+      speedOfSound_(10.0 * settings.maxSpeed),
+      tait_(settings.restDensity * speedOfSound_ * speedOfSound_ / kTaitGamma),
+      // The grid reaches one support radius beyond the domain so that the boundary layer, which
+      // sits half a spacing outside the container's walls, is inside it.
+      gridDomain_(expanded(domain, kernel_.supportRadius())), bodies_(std::move(bodies)),
+      boundary_(gridDomain_, kernel_.supportRadius(), static_cast<float>(settings.restDensity)),
+      grid_(gridDomain_, kernel_.supportRadius()) {
+    boundary_.rebuild(bodies_);
+}
+
+float WcsphSolver::pressure(float density) const {
+    const double ratio = density / settings_.restDensity;
+    const double r2 = ratio * ratio;
+    const double r7 = r2 * r2 * r2 * ratio;
+    return static_cast<float>(std::max(0.0, tait_ * (r7 - 1.0)));
+}
+
+float WcsphSolver::densityForPressure(double pressure) const {
+    return static_cast<float>(settings_.restDensity *
+                              std::pow(1.0 + pressure / tait_, 1.0 / kTaitGamma));
+}
+
+StepReport WcsphSolver::step(SimulationState& state, double timeToFrameEnd) {
+    StepReport report;
+    ParticleSet& fluid = state.fluid;
+    {
+        StepPhases::Scope scope(phases_, StepPhases::Neighbours);
+        sortByCell(fluid, report);
+    }
+    {
+        StepPhases::Scope scope(phases_, StepPhases::Density);
+        const int interval = settings_.shepardInterval;
+        if (interval > 0 && state.steps > 0 && state.steps % interval == 0)
+            shepardFilter(fluid);
+        report.maxSpeed = computePressures(fluid);
+    }
+    report.timeStep = chooseTimeStep(report.maxSpeed, state.lastMaxAcceleration, timeToFrameEnd);
+    {
+        StepPhases::Scope scope(phases_, StepPhases::Forces);
+        report.maxAcceleration = computeRates(fluid, report.timeStep);
+    }
+    {
+        StepPhases::Scope scope(phases_, StepPhases::Integrate);
+        integrate(fluid, report.timeStep, report);
+    }
+    state.lastMaxAcceleration = report.maxAcceleration;
+    state.lastTimeStep = report.timeStep;
+    ++state.steps;
+    return report;
+}
+
+void WcsphSolver::sortByCell(ParticleSet& fluid, StepReport& report) {
+    grid_.build(fluid.positions);
+    report.removedParticles = grid_.outsideCount();
+    const auto& order = grid_.order();
+    const std::size_t n = order.size();
+    reorderScratch_.resize(n);
+    tbb::parallel_for(Range(0, n, 4096), [&](const Range& r) {
+        for (std::size_t s = r.begin(); s != r.end(); ++s) {
+            const std::uint32_t from = order[s];
+            reorderScratch_.positions[s] = fluid.positions[from];
+            reorderScratch_.velocities[s] = fluid.velocities[from];
+            reorderScratch_.densities[s] = fluid.densities[from];
+            reorderScratch_.ids[s] = fluid.ids[from];
+        }
+    });
+    std::swap(fluid, reorderScratch_);
+}
+
+double WcsphSolver::computePressures(const ParticleSet& fluid) {
+    const std::size_t n = fluid.size();
+    pressureOverDensity2_.resize(n);
+    return parallelMax(n, [&](std::size_t i) {
+        const float rho = fluid.densities[i];
+        pressureOverDensity2_[i] = pressure(rho) / (rho * rho);
+        return fluid.velocities[i].norm();
+    });
+}
+
+double WcsphSolver::chooseTimeStep(double maxSpeed, double lastMaxAcceleration,
+                                   double timeToFrameEnd) const {
+    const double h = kernel_.smoothingLength();
+    double dt = settings_.cflFactor * h / (speedOfSound_ + maxSpeed);
+    if (lastMaxAcceleration > 0.0)
+        dt = std::min(dt, 0.25 * std::sqrt(h / lastMaxAcceleration));
+    if (dt >= timeToFrameEnd)
+        return timeToFrameEnd;
+    // Two even steps rather than a full one and a sliver: a tiny last step wastes a force pass.
+    if (2.0 * dt > timeToFrameEnd)
+        return 0.5 * timeToFrameEnd;
+    return dt;
+}
+
+void WcsphSolver::shepardFilter(ParticleSet& fluid) {
+    // ρᵢ = Σⱼ mⱼWᵢⱼ / Σⱼ (mⱼ/ρⱼ)Wᵢⱼ over the water (METHOD-NOTES §2), which removes the slow drift
+    // of the continuity density without the surface deficiency of a plain summation.
+    const std::size_t n = fluid.size();
+    const float radius2 = kernel_.supportRadius() * kernel_.supportRadius();
+    std::vector<float>& filtered = densityRates_; // free until the force pass
+    filtered.resize(n);
+    tbb::parallel_for(Range(0, n, kGrain), [&](const Range& r) {
+        for (std::size_t i = r.begin(); i != r.end(); ++i) {
+            const Vec3f xi = fluid.positions[i];
+            float weight = 0.0f;
+            float weightOverDensity = 0.0f;
+            grid_.forEachNeighborRange(xi, [&](std::uint32_t begin, std::uint32_t end) {
+                for (std::uint32_t j = begin; j < end; ++j) {
+                    const float r2 = (xi - fluid.positions[j]).squaredNorm();
+                    if (r2 >= radius2)
+                        continue;
+                    const float w = kernel_.value(std::sqrt(r2));
+                    weight += w;
+                    weightOverDensity += w / fluid.densities[j];
+                }
+            });
+            filtered[i] = weight / weightOverDensity;
+        }
+    });
+    fluid.densities.swap(filtered);
+}
+
+double WcsphSolver::computeRates(const ParticleSet& fluid, double dt) {
+    const std::size_t n = fluid.size();
+    densityRates_.resize(n);
+    accelerations_.resize(n);
+    const float radius2 = kernel_.supportRadius() * kernel_.supportRadius();
+    const float h = kernel_.smoothingLength();
+    const float eta2 = 0.01f * h * h; // keeps μ finite for coincident particles
+    const float c = static_cast<float>(speedOfSound_);
+    const float fluidViscosity = static_cast<float>(settings_.viscosityAlpha) * c * h;
+    const float wallViscosity = static_cast<float>(settings_.wallViscosity) * c * h;
+    const float contactRadius2 = 0.25f * spacing_ * spacing_;
+    const float restitution = static_cast<float>(settings_.wallRestitution);
+    const Vec3f gravity = settings_.gravity.cast<float>();
+    const float invDt = static_cast<float>(1.0 / dt);
+    const auto& boundaryGrid = boundary_.grid();
+    const auto& bx = boundary_.positions();
+    const auto& bv = boundary_.velocities();
+    const auto& bn = boundary_.normals();
+    const auto& bpsi = boundary_.psi();
+    const bool hasBoundary = boundary_.size() > 0;
+
+    return parallelMax(n, [&](std::size_t i) {
+        const Vec3f xi = fluid.positions[i];
+        const Vec3f vi = fluid.velocities[i];
+        const float rhoi = fluid.densities[i];
+        const float pi = pressureOverDensity2_[i];
+        const float pressurei = pi * rhoi * rhoi;
+
+        // Water neighbours: eq. 2 and eq. 1 with Monaghan's Π (β = 0).
+        float drho = 0.0f;
+        Vec3f force = Vec3f::Zero();
+        grid_.forEachNeighborRange(xi, [&](std::uint32_t begin, std::uint32_t end) {
+            for (std::uint32_t j = begin; j < end; ++j) {
+                const Vec3f d = xi - fluid.positions[j];
+                const float r2 = d.squaredNorm();
+                if (r2 >= radius2 || j == i)
+                    continue;
+                const Vec3f grad = kernel_.gradient(d, std::sqrt(r2));
+                const Vec3f vij = vi - fluid.velocities[j];
+                drho += vij.dot(grad);
+                const float approach = vij.dot(d);
+                float viscosity = 0.0f;
+                if (approach < 0.0f) {
+                    const float rhoBar = 0.5f * (rhoi + fluid.densities[j]);
+                    viscosity = -fluidViscosity * approach / ((r2 + eta2) * rhoBar);
+                }
+                force -= (pi + pressureOverDensity2_[j] + viscosity) * grad;
+            }
+        });
+        drho *= mass_;
+        Vec3f acceleration = mass_ * force + gravity;
+
+        // Boundary particles: the fluid force F_f of eq. 4 (Akinci et al. 2012) plus wall
+        // friction, and the nearest contact.
+        std::uint32_t contact = 0;
+        float contactDistance2 = contactRadius2;
+        bool touching = false;
+        if (hasBoundary) {
+            boundaryGrid.forEachNeighborRange(xi, [&](std::uint32_t begin, std::uint32_t end) {
+                for (std::uint32_t b = begin; b < end; ++b) {
+                    const Vec3f d = xi - bx[b];
+                    const float r2 = d.squaredNorm();
+                    if (r2 >= radius2)
+                        continue;
+                    const Vec3f grad = kernel_.gradient(d, std::sqrt(r2));
+                    const Vec3f vib = vi - bv[b];
+                    drho += bpsi[b] * vib.dot(grad);
+                    const float approach = vib.dot(d);
+                    float viscosity = 0.0f;
+                    if (approach < 0.0f)
+                        viscosity = -wallViscosity * approach / ((r2 + eta2) * rhoi);
+                    // The wall's pressure is the particle's, extrapolated hydrostatically to
+                    // the wall particle (Adami et al. 2012), so that a floor carries the weight
+                    // of the layer above it instead of half of it.
+                    const float wallPressure =
+                        std::max(0.0f, pressurei + rhoi * gravity.dot(bx[b] - xi));
+                    const float pb = wallPressure / (rhoi * rhoi);
+                    acceleration -= bpsi[b] * (pi + pb + viscosity) * grad;
+                    if (r2 < contactDistance2) {
+                        contactDistance2 = r2;
+                        contact = b;
+                        touching = true;
+                    }
+                }
+            });
+        }
+        densityRates_[i] = drho;
+        const float magnitude = acceleration.norm();
+
+        // Contact impulse J (eq. 4) for a particle that would still approach the body after this
+        // step; a static body has infinite mass, so j = −(1 + ε) m uₙ and J/(mΔt) is added.
+        if (touching) {
+            const Vec3f predicted = vi + static_cast<float>(dt) * acceleration - bv[contact];
+            const float normalSpeed = predicted.dot(bn[contact]);
+            if (normalSpeed < 0.0f)
+                acceleration -= (1.0f + restitution) * normalSpeed * invDt * bn[contact];
+        }
+        accelerations_[i] = acceleration;
+        return magnitude;
+    });
+}
+
+void WcsphSolver::integrate(ParticleSet& fluid, double dt, StepReport& report) {
+    const float step = static_cast<float>(dt);
+    const double invRest = 1.0 / settings_.restDensity;
+    const float restDensity = static_cast<float>(settings_.restDensity);
+    std::atomic<bool> nonFinite{false};
+    report.maxDensityDeviation = parallelMax(fluid.size(), [&](std::size_t i) {
+        // Symplectic Euler: the new velocity moves the particle.
+        fluid.velocities[i] += step * accelerations_[i];
+        fluid.positions[i] += step * fluid.velocities[i];
+        // Water does not expand: below ρ₀ the clamped pressure could not push back, and a
+        // particle that drifted low would let its neighbours clump onto it when the flow
+        // converges again (the clamp SPlisHSPlasH applies before its equation of state).
+        fluid.densities[i] = std::max(restDensity, fluid.densities[i] + step * densityRates_[i]);
+        if (!fluid.positions[i].allFinite() || !fluid.velocities[i].allFinite() ||
+            !std::isfinite(fluid.densities[i]))
+            nonFinite.store(true, std::memory_order_relaxed);
+        return std::abs(fluid.densities[i] * invRest - 1.0);
+    });
+    report.nonFinite = nonFinite.load();
+}
+
+std::size_t WcsphSolver::allocatedBytes() const {
+    return grid_.allocatedBytes() + boundary_.allocatedBytes() +
+           pressureOverDensity2_.capacity() * sizeof(float) +
+           densityRates_.capacity() * sizeof(float) + accelerations_.capacity() * sizeof(Vec3f) +
+           reorderScratch_.allocatedBytes();
+}
+
+} // namespace airtrap

@@ -1,0 +1,82 @@
+#pragma once
+// Weakly compressible SPH (paper §3.1, DESIGN §4): continuity density (eq. 2) with a periodic
+// Shepard re-initialisation, Tait equation of state (eq. 3, γ = 7, c = 10·u_max), Monaghan
+// momentum with artificial viscosity (eq. 1), boundary particles for every rigid body, and the
+// contact impulse of the impulse-based boundary force (eq. 4) for water approaching a body.
+#include "rigid/RigidBody.h"
+#include "scene/Scene.h"
+#include "sim/SimulationState.h"
+#include "sph/BoundaryModel.h"
+#include "sph/CubicSplineKernel.h"
+#include "sph/NeighborGrid.h"
+#include "sph/StepPhases.h"
+
+#include <vector>
+
+namespace airtrap {
+
+//! What one step did, for the time-step controller and the blow-up guard.
+struct StepReport {
+    double timeStep = 0.0;            //!< s, Δt actually taken
+    double maxAcceleration = 0.0;     //!< m/s², without contact impulses (feeds the next Δt)
+    double maxSpeed = 0.0;            //!< m/s, at the start of the step
+    double maxDensityDeviation = 0.0; //!< max |ρ/ρ₀ − 1| after the step
+    std::size_t removedParticles = 0; //!< left the domain this step
+    bool nonFinite = false;           //!< a NaN or infinity appeared
+};
+
+class WcsphSolver {
+public:
+    WcsphSolver(const SolverSettings& settings, const Aabb& domain, std::vector<RigidBody> bodies);
+
+    //! Takes one step of at most `timeToFrameEnd` seconds; the step is shortened so that frame
+    //! times are met exactly without a sliver of a last step. Reorders the particles.
+    StepReport step(SimulationState& state, double timeToFrameEnd);
+
+    //! Re-initialises every density by Shepard interpolation (also done every N steps).
+    void shepardFilter(ParticleSet& fluid);
+
+    //! Tait equation of state, p = B((ρ/ρ₀)^γ − 1), clamped at 0 so the free surface does not
+    //! pull particles into clumps.
+    float pressure(float density) const;
+    //! The density at which the pressure equals p (inverse of the equation of state).
+    float densityForPressure(double pressure) const;
+
+    const CubicSplineKernel& kernel() const { return kernel_; }
+    float particleMass() const { return mass_; }
+    double speedOfSound() const { return speedOfSound_; }
+    const std::vector<RigidBody>& bodies() const { return bodies_; }
+    const BoundaryModel& boundary() const { return boundary_; }
+    const NeighborGrid& grid() const { return grid_; }
+    StepPhases& phases() { return phases_; }
+    //! Heap bytes held by the solver's grids and scratch arrays (not the particle state).
+    std::size_t allocatedBytes() const;
+
+private:
+    void sortByCell(ParticleSet& fluid, StepReport& report);
+    double computePressures(const ParticleSet& fluid);
+    double chooseTimeStep(double maxSpeed, double lastMaxAcceleration,
+                          double timeToFrameEnd) const;
+    double computeRates(const ParticleSet& fluid, double dt);
+    void integrate(ParticleSet& fluid, double dt, StepReport& report);
+
+    SolverSettings settings_;
+    CubicSplineKernel kernel_;
+    float spacing_;
+    float mass_;
+    double speedOfSound_;
+    double tait_; //!< B = ρ₀c²/γ
+    Aabb gridDomain_;
+    std::vector<RigidBody> bodies_;
+    BoundaryModel boundary_;
+    NeighborGrid grid_;
+    StepPhases phases_;
+
+    // Per-particle scratch, in the sorted order of the current step.
+    std::vector<float> pressureOverDensity2_; //!< p/ρ², the pressure term of eq. 1
+    std::vector<float> densityRates_;         //!< dρ/dt (eq. 2)
+    std::vector<Vec3f> accelerations_;        //!< dv/dt (eq. 1 + contact impulses)
+    ParticleSet reorderScratch_;
+};
+
+} // namespace airtrap

@@ -1,0 +1,74 @@
+// The cubic spline kernel: normalisation, compact support, gradient antisymmetry and agreement
+// with a finite-difference derivative.
+#include "sph/CubicSplineKernel.h"
+
+#include <QtTest>
+
+#include <cmath>
+
+using namespace airtrap;
+
+class TestKernel : public QObject {
+    Q_OBJECT
+
+private Q_SLOTS:
+    void integratesToOne_data() {
+        QTest::addColumn<float>("support");
+        QTest::newRow("H = 0.04") << 0.04f;
+        QTest::newRow("H = 1") << 1.0f;
+    }
+
+    void integratesToOne() {
+        QFETCH(float, support);
+        const CubicSplineKernel kernel(support);
+        // Midpoint rule on a lattice fine enough for 1e-3.
+        const int cells = 80;
+        const double step = 2.0 * support / cells;
+        double integral = 0.0;
+        for (int k = 0; k < cells; ++k)
+            for (int j = 0; j < cells; ++j)
+                for (int i = 0; i < cells; ++i) {
+                    const Eigen::Vector3d x =
+                        (Eigen::Vector3d(i, j, k) + Eigen::Vector3d::Constant(0.5)) * step -
+                        Eigen::Vector3d::Constant(support);
+                    integral += kernel.value(static_cast<float>(x.norm()));
+                }
+        integral *= step * step * step;
+        QVERIFY2(std::abs(integral - 1.0) < 1e-3, qPrintable(QString::number(integral)));
+    }
+
+    void vanishesAtSupport() {
+        const CubicSplineKernel kernel(0.1f);
+        QCOMPARE(kernel.value(0.1f), 0.0f);
+        QCOMPARE(kernel.value(0.15f), 0.0f);
+        QVERIFY(kernel.value(0.0999f) > 0.0f);
+        QCOMPARE(kernel.gradient(Vec3f(0.12f, 0, 0), 0.12f), Vec3f::Zero());
+    }
+
+    void gradientIsAntisymmetric() {
+        const CubicSplineKernel kernel(0.1f);
+        for (const Vec3f& d : {Vec3f(0.01f, 0.02f, -0.03f), Vec3f(0.06f, -0.01f, 0.02f)}) {
+            const Vec3f forward = kernel.gradient(d, d.norm());
+            const Vec3f backward = kernel.gradient(-d, d.norm());
+            QVERIFY((forward + backward).norm() < 1e-6f * forward.norm());
+            QVERIFY(forward.dot(d) < 0.0f); // W falls with distance
+        }
+    }
+
+    void gradientMatchesFiniteDifference() {
+        const CubicSplineKernel kernel(0.1f);
+        const float eps = 1e-4f;
+        for (float r : {0.02f, 0.049f, 0.051f, 0.08f}) {
+            const float numeric = (kernel.value(r + eps) - kernel.value(r - eps)) / (2 * eps);
+            const float analytic = kernel.gradient(Vec3f(r, 0, 0), r).x();
+            QVERIFY2(std::abs(numeric - analytic) < 1e-3f * std::abs(analytic),
+                     qPrintable(QString("r=%1 numeric %2 analytic %3")
+                                    .arg(r)
+                                    .arg(numeric)
+                                    .arg(analytic)));
+        }
+    }
+};
+
+QTEST_APPLESS_MAIN(TestKernel)
+#include "TestKernel.moc"

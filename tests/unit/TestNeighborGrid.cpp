@@ -1,0 +1,118 @@
+// The neighbour grid finds exactly the pairs a brute-force search finds, sorts stably, drops
+// points outside the domain, and reports occupancy.
+#include "sph/NeighborGrid.h"
+
+#include <QtTest>
+
+#include <algorithm>
+#include <random>
+#include <set>
+#include <utility>
+
+using namespace airtrap;
+
+namespace {
+
+std::vector<Vec3f> randomPoints(std::size_t count, const Aabb& box, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    std::vector<Vec3f> points(count);
+    for (Vec3f& p : points)
+        p = box.min.cast<float>() +
+            Vec3f(u(rng), u(rng), u(rng)).cwiseProduct(box.size().cast<float>());
+    return points;
+}
+
+} // namespace
+
+class TestNeighborGrid : public QObject {
+    Q_OBJECT
+
+private Q_SLOTS:
+    void neighboursEqualBruteForce_data() {
+        QTest::addColumn<int>("count");
+        QTest::addColumn<float>("radius");
+        QTest::newRow("sparse") << 500 << 0.05f;
+        QTest::newRow("dense") << 4000 << 0.12f;
+    }
+
+    void neighboursEqualBruteForce() {
+        QFETCH(int, count);
+        QFETCH(float, radius);
+        const Aabb domain{Vec3d(-0.3, 0.0, 0.1), Vec3d(0.7, 0.6, 0.5)};
+        const std::vector<Vec3f> points = randomPoints(count, domain, 42);
+        NeighborGrid grid(domain, radius);
+        grid.build(points);
+        const auto& order = grid.order();
+        QCOMPARE(order.size(), points.size());
+
+        const float r2 = radius * radius;
+        std::set<std::pair<std::uint32_t, std::uint32_t>> fromGrid, bruteForce;
+        for (std::uint32_t s = 0; s < order.size(); ++s) {
+            const Vec3f& x = points[order[s]];
+            grid.forEachNeighborRange(x, [&](std::uint32_t begin, std::uint32_t end) {
+                for (std::uint32_t t = begin; t < end; ++t)
+                    if (t != s && (x - points[order[t]]).squaredNorm() < r2)
+                        fromGrid.insert({order[s], order[t]});
+            });
+        }
+        for (std::uint32_t a = 0; a < points.size(); ++a)
+            for (std::uint32_t b = 0; b < points.size(); ++b)
+                if (a != b && (points[a] - points[b]).squaredNorm() < r2)
+                    bruteForce.insert({a, b});
+        QVERIFY(!bruteForce.empty());
+        QCOMPARE(fromGrid.size(), bruteForce.size());
+        QVERIFY(fromGrid == bruteForce);
+    }
+
+    void sortIsStableAndGroupsCells() {
+        const Aabb domain{Vec3d::Zero(), Vec3d::Ones()};
+        const std::vector<Vec3f> points = randomPoints(2000, domain, 7);
+        NeighborGrid grid(domain, 0.1f);
+        grid.build(points);
+        const auto& order = grid.order();
+        int previousCell = -1;
+        std::uint32_t previousIndex = 0;
+        for (std::uint32_t s = 0; s < order.size(); ++s) {
+            const Vec3i c = grid.cellCoordinates(points[order[s]]);
+            const int cell = grid.linearIndex(c.x(), c.y(), c.z());
+            QVERIFY(cell >= previousCell);
+            if (cell == previousCell)
+                QVERIFY(order[s] > previousIndex); // stable: input order kept within a cell
+            previousCell = cell;
+            previousIndex = order[s];
+        }
+    }
+
+    void dropsPointsOutsideTheDomain() {
+        const Aabb domain{Vec3d::Zero(), Vec3d::Ones()};
+        std::vector<Vec3f> points = {Vec3f(0.5f, 0.5f, 0.5f), Vec3f(1.5f, 0.5f, 0.5f),
+                                     Vec3f(0.2f, std::nanf(""), 0.1f), Vec3f(0.9f, 0.9f, 0.9f)};
+        NeighborGrid grid(domain, 0.25f);
+        grid.build(points);
+        QCOMPARE(grid.outsideCount(), std::size_t(2));
+        QCOMPARE(grid.order(), (std::vector<std::uint32_t>{0, 3}));
+    }
+
+    void reportsOccupancy() {
+        const Aabb domain{Vec3d::Zero(), Vec3d::Ones()};
+        const std::vector<Vec3f> points = {Vec3f(0.1f, 0.1f, 0.1f), Vec3f(0.15f, 0.12f, 0.1f),
+                                           Vec3f(0.9f, 0.9f, 0.9f)};
+        NeighborGrid grid(domain, 0.25f);
+        grid.build(points);
+        std::uint32_t total = 0;
+        int occupied = 0;
+        for (std::size_t c = 0; c < grid.cellTotal(); ++c) {
+            total += grid.cellCount(static_cast<int>(c));
+            occupied += grid.cellCount(static_cast<int>(c)) > 0;
+        }
+        QCOMPARE(total, 3u);
+        QCOMPARE(occupied, 2);
+        const Vec3i c = grid.cellCoordinates(points[0]);
+        QCOMPARE(grid.cellCount(grid.linearIndex(c.x(), c.y(), c.z())), 2u);
+        QCOMPARE(grid.dimensions(), Vec3i(6, 6, 6)); // 4 cells + a ghost layer on each side
+    }
+};
+
+QTEST_APPLESS_MAIN(TestNeighborGrid)
+#include "TestNeighborGrid.moc"

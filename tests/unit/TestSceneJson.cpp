@@ -1,0 +1,286 @@
+// Scene files: the samples, round trips, and the messages for every kind of bad input (each must
+// name the file, the JSON path, the value and the allowed range).
+#include "scene/SceneJson.h"
+#include "scene/SceneValidator.h"
+#include "unit/SceneTestSupport.h"
+
+#include <QDir>
+#include <QTemporaryDir>
+#include <QtTest>
+#include <fstream>
+#include <sstream>
+
+using namespace airtrap;
+using airtrap::test::contains;
+using airtrap::test::errorMessage;
+
+namespace {
+
+const std::string kSamples = std::string(AIRTRAP_SOURCE_DIR) + "/samples/";
+
+std::string readText(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+//! A valid scene as JSON, to be broken one key at a time.
+nlohmann::json validJson() {
+    Scene scene;
+    scene.fluidBlocks.resize(2);
+    scene.obstacles.resize(1);
+    return sceneToJson(scene);
+}
+
+std::string readError(const nlohmann::json& json) {
+    return errorMessage([&] { sceneFromJson(json, "scene.json"); });
+}
+
+} // namespace
+
+class TestSceneJson : public QObject {
+    Q_OBJECT
+
+private Q_SLOTS:
+    void samplesLoadAndValidate_data() {
+        QTest::addColumn<QString>("file");
+        QTest::newRow("dam_break") << "dam_break.json";
+        QTest::newRow("hydrostatic") << "hydrostatic.json";
+    }
+
+    void samplesLoadAndValidate() {
+        QFETCH(QString, file);
+        const std::string path = kSamples + file.toStdString();
+        const Scene scene = readSceneFile(path);
+        QCOMPARE(scene.sourcePath, path);
+        QVERIFY(!scene.fluidBlocks.empty());
+        const std::vector<std::string> warnings = validateScene(scene);
+        QVERIFY2(warnings.empty(), warnings.empty() ? "" : warnings.front().c_str());
+        // The samples were written by writeSceneFile, so they are in canonical form.
+        QCOMPARE(readText(path), sceneToText(scene));
+    }
+
+    void damBreakMatchesTheSetup() {
+        const Scene scene = readSceneFile(kSamples + "dam_break.json");
+        QCOMPARE(scene.solver.particleSpacing, 0.02);
+        QCOMPARE(scene.solver.maxSpeed, 6.0);
+        QVERIFY(scene.container.max.isApprox(Vec3d(2.5, 1.2, 0.4)));
+        QVERIFY(scene.fluidBlocks.at(0).max.isApprox(Vec3d(0.5, 1.0, 0.4)));
+        QCOMPARE(scene.frames.endFrame, 60);
+    }
+
+    void defaultSceneRoundTrips() {
+        const Scene original;
+        const Scene copy = sceneFromJson(sceneToJson(original), "round trip");
+        QCOMPARE(sceneToJson(copy), sceneToJson(original));
+        QCOMPARE(sceneToText(copy), sceneToText(original));
+        QCOMPARE(copy.name, original.name);
+        QCOMPARE(copy.solver.gravity, original.solver.gravity);
+        QCOMPARE(copy.frames.endFrame, original.frames.endFrame);
+    }
+
+    void sceneWithArraysRoundTrips() {
+        Scene original;
+        original.fluidBlocks.resize(2);
+        original.fluidBlocks[1].initialVelocity = Vec3d(0.1, -0.25, 1.0 / 3.0);
+        original.obstacles.resize(1);
+        original.seed = 9007199254740991ULL;
+        const Scene copy = sceneFromText(sceneToText(original), "round trip");
+        QCOMPARE(sceneToJson(copy), sceneToJson(original));
+        QCOMPARE(copy.fluidBlocks[1].initialVelocity, original.fluidBlocks[1].initialVelocity);
+        QCOMPARE(copy.seed, original.seed);
+    }
+
+    void missingKeysTakeDefaults() {
+        const Scene scene = sceneFromJson({{"format_version", 1}}, "minimal.json");
+        QCOMPARE(sceneToJson(scene), sceneToJson(Scene()));
+        const Scene partial =
+            sceneFromJson({{"format_version", 1}, {"fluid_blocks", {{{"name", "A"}}}}}, "x.json");
+        QCOMPARE(partial.fluidBlocks.at(0).max, FluidBlock().max);
+    }
+
+    void malformedJsonNamesFileAndLine() {
+        QTemporaryDir folder;
+        const std::string path = test::writeFile(
+            folder, "broken.json",
+            "{\n    \"format_version\": 1,\n    \"name\": \"x\"\n    \"seed\": 2\n}\n");
+        const std::string message = errorMessage([&] { readSceneFile(path); });
+        QVERIFY2(contains(message, path + ": malformed JSON at line 4, column"), message.c_str());
+    }
+
+    void unknownKeyNamesPathAndSuggests() {
+        nlohmann::json json = validJson();
+        json["solver"]["particle_spacng"] = 0.02;
+        std::string message = readError(json);
+        QVERIFY2(contains(message, "scene.json: solver.particle_spacng: unknown key; did you mean "
+                                   "\"particle_spacing\"?"),
+                 message.c_str());
+        QVERIFY2(contains(message, "Valid keys of solver: particle_spacing, support_factor"),
+                 message.c_str());
+
+        json = validJson();
+        json["solvr"] = nlohmann::json::object();
+        message = readError(json);
+        QVERIFY2(contains(message, "scene.json: solvr: unknown key; did you mean \"solver\"?"),
+                 message.c_str());
+
+        json = validJson();
+        json["fluid_blocks"][1]["colour"] = "blue";
+        message = readError(json);
+        QVERIFY2(contains(message, "scene.json: fluid_blocks[1].colour: unknown key; valid keys "
+                                   "of fluid_blocks: name, min, max, initial_velocity"),
+                 message.c_str());
+    }
+
+    void outOfRangeNamesPathValueAndRange() {
+        nlohmann::json json = validJson();
+        json["solver"]["particle_spacing"] = -0.01;
+        std::string message = readError(json);
+        QCOMPARE(message,
+                 std::string("scene.json: solver.particle_spacing = -0.01 is out of range; "
+                             "expected a number in [0.001, 1] m"));
+
+        json = validJson();
+        json["frames"]["end_frame"] = 1;
+        message = readError(json);
+        QCOMPARE(message, std::string("scene.json: frames.end_frame = 1 is out of range; expected "
+                                      "an integer in [2, 100000]"));
+
+        json = validJson();
+        json["obstacles"][0]["size"] = {0.2, 0.0, 0.2};
+        message = readError(json);
+        QCOMPARE(message,
+                 std::string("scene.json: obstacles[0].size = [0.2, 0, 0.2] is out of "
+                             "range; expected an array of 3 numbers, each in (0, 1000] m"));
+    }
+
+    void wrongTypeNamesPathValueAndRange() {
+        nlohmann::json json = validJson();
+        json["fluid_blocks"][1]["min"] = "abc";
+        std::string message = readError(json);
+        QCOMPARE(message, std::string("scene.json: fluid_blocks[1].min: expected an array of 3 "
+                                      "numbers, each in [-1000, 1000] m, got \"abc\""));
+
+        json = validJson();
+        json["frames"]["end_frame"] = 2.5;
+        message = readError(json);
+        QVERIFY2(contains(message, "frames.end_frame: expected an integer in [2, 100000], got 2.5"),
+                 message.c_str());
+
+        json = validJson();
+        json["solver"] = 3;
+        message = readError(json);
+        QVERIFY2(contains(message, "scene.json: solver: expected an object, got 3"),
+                 message.c_str());
+
+        json = validJson();
+        json["obstacles"] = {{"name", "x"}};
+        message = readError(json);
+        QVERIFY2(contains(message, "obstacles: expected an array of objects"), message.c_str());
+    }
+
+    void wholeNumberFloatIsAnInteger() {
+        nlohmann::json json = validJson();
+        json["frames"]["end_frame"] = 90.0;
+        QCOMPARE(sceneFromJson(json, "x").frames.endFrame, 90);
+    }
+
+    void badChoiceListsTheChoices() {
+        nlohmann::json json = validJson();
+        json["obstacles"][0]["shape"] = "sphere";
+        const std::string message = readError(json);
+        QCOMPARE(message, std::string("scene.json: obstacles[0].shape = \"sphere\" is not one of "
+                                      "the choices; expected one of \"box\""));
+    }
+
+    void everyErrorIsReported() {
+        nlohmann::json json = validJson();
+        json["solver"]["cfl_factor"] = 5;
+        json["container"]["headroom"] = "high";
+        json["seed"] = -1;
+        const std::string message = readError(json);
+        QCOMPARE(std::count(message.begin(), message.end(), '\n'), 2L);
+        QVERIFY2(contains(message, "scene.json: seed = -1 is out of range"), message.c_str());
+        QVERIFY2(contains(message, "scene.json: solver.cfl_factor = 5 is out of range; expected a "
+                                   "number in [0.05, 0.6]"),
+                 message.c_str());
+        QVERIFY2(contains(message, "scene.json: container.headroom: expected a number in [0, 100] "
+                                   "m, got \"high\""),
+                 message.c_str());
+    }
+
+    void formatVersionIsChecked() {
+        nlohmann::json json = validJson();
+        json.erase("format_version");
+        std::string message = readError(json);
+        QVERIFY2(contains(message, "scene.json: format_version is missing"), message.c_str());
+
+        json["format_version"] = 2;
+        message = readError(json);
+        QVERIFY2(contains(message, "scene.json: written by a newer Airtrap (format_version 2)"),
+                 message.c_str());
+
+        json["format_version"] = 0;
+        message = readError(json);
+        QVERIFY2(contains(message, "format_version = 0 is out of range; expected an integer in "
+                                   "[1, 1]"),
+                 message.c_str());
+
+        json["format_version"] = "1";
+        message = readError(json);
+        QVERIFY2(contains(message, "format_version: expected an integer"), message.c_str());
+    }
+
+    void topLevelMustBeAnObject() {
+        const std::string message = readError(nlohmann::json::array({1, 2}));
+        QVERIFY2(contains(message, "scene.json: expected a JSON object at the top level"),
+                 message.c_str());
+    }
+
+    void unreadableFileIsAnIoError() {
+        const std::string path = "/nonexistent/scene.json";
+        const std::string message = errorMessage([&] { readSceneFile(path); }, ErrorKind::Io);
+        QVERIFY2(contains(message, path), message.c_str());
+    }
+
+    void writeIsAtomicAndReadsBack() {
+        QTemporaryDir folder;
+        const std::string path = folder.path().toStdString() + "/scene.json";
+        Scene scene;
+        scene.fluidBlocks.resize(1);
+        writeSceneFile(scene, path);
+        scene.name = "Second";
+        writeSceneFile(scene, path);
+        QCOMPARE(readSceneFile(path).name, std::string("Second"));
+        QCOMPARE(QDir(folder.path()).entryList(QDir::Files), QStringList{"scene.json"});
+
+        const std::string badPath = folder.path().toStdString() + "/missing/scene.json";
+        const std::string message =
+            errorMessage([&] { writeSceneFile(scene, badPath); }, ErrorKind::Io);
+        QVERIFY2(contains(message, badPath), message.c_str());
+    }
+
+    void parameterHashIsStableAndSensitive() {
+        Scene scene = readSceneFile(kSamples + "dam_break.json");
+        const std::string hash = parameterHash(scene);
+        QCOMPARE(hash.size(), std::size_t(16));
+        QVERIFY(hash.find_first_not_of("0123456789abcdef") == std::string::npos);
+        QCOMPARE(parameterHash(sceneFromText(sceneToText(scene), "copy")), hash);
+
+        Scene renamed = scene;
+        renamed.name = "Another name";
+        renamed.sourcePath = "elsewhere.json";
+        QCOMPARE(parameterHash(renamed), hash);
+
+        Scene changed = scene;
+        changed.solver.particleSpacing = 0.021;
+        QVERIFY(parameterHash(changed) != hash);
+        changed = scene;
+        changed.fluidBlocks[0].max.y() += 1e-9;
+        QVERIFY(parameterHash(changed) != hash);
+    }
+};
+
+QTEST_APPLESS_MAIN(TestSceneJson)
+#include "TestSceneJson.moc"

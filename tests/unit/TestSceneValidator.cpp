@@ -1,0 +1,129 @@
+// Cross-field validation: container corners, fluid blocks in the domain, obstacles in the
+// domain, the particle cap, and overlap warnings.
+#include "scene/SceneValidator.h"
+#include "unit/SceneTestSupport.h"
+
+#include <QtTest>
+
+using namespace airtrap;
+using airtrap::test::contains;
+using airtrap::test::errorMessage;
+
+namespace {
+
+//! A valid scene: a 2 × 1 × 1 m tank with a water block and a box that do not touch.
+Scene validScene() {
+    Scene scene;
+    scene.sourcePath = "tank.json";
+    scene.container.max = Vec3d(2.0, 1.0, 1.0);
+    FluidBlock block;
+    block.max = Vec3d(0.5, 0.5, 1.0);
+    scene.fluidBlocks.push_back(block);
+    BoxObstacle obstacle;
+    obstacle.center = Vec3d(1.5, 0.25, 0.5);
+    scene.obstacles.push_back(obstacle);
+    return scene;
+}
+
+std::string validationError(const Scene& scene) {
+    return errorMessage([&] { validateScene(scene); });
+}
+
+} // namespace
+
+class TestSceneValidator : public QObject {
+    Q_OBJECT
+
+private Q_SLOTS:
+    void validSceneHasNoIssues() {
+        const SceneIssues issues = SceneValidator::check(validScene());
+        QVERIFY(issues.ok());
+        QVERIFY(issues.warnings.empty());
+    }
+
+    void containerNeedsMinBelowMax() {
+        Scene scene = validScene();
+        scene.container.min.z() = 1.0;
+        QCOMPARE(validationError(scene),
+                 std::string("tank.json: container: min.z = 1 must be less than max.z = 1"));
+    }
+
+    void needsAFluidBlock() {
+        Scene scene = validScene();
+        scene.fluidBlocks.clear();
+        const std::string message = validationError(scene);
+        QVERIFY2(contains(message, "tank.json: fluid_blocks is empty"), message.c_str());
+    }
+
+    void fluidBlockMustBeInsideTheDomain() {
+        Scene scene = validScene();
+        scene.fluidBlocks[0].max.y() = 1.2; // above the rim, inside the 0.5 m headroom: falls in
+        QVERIFY(SceneValidator::check(scene).ok());
+        scene.fluidBlocks[0].max.y() = 1.6;
+        std::string message = validationError(scene);
+        QCOMPARE(message, std::string("tank.json: fluid_blocks[0] (\"Water\") reaches outside the "
+                                      "domain (container plus headroom): max.y = 1.6 > 1.5"));
+        scene = validScene();
+        scene.fluidBlocks[0].min.x() = 0.6;
+        message = validationError(scene);
+        QVERIFY2(contains(message, "fluid_blocks[0] (\"Water\"): min.x = 0.6 must be less than "
+                                   "max.x = 0.5"),
+                 message.c_str());
+    }
+
+    void obstacleMustBeInsideTheDomain() {
+        Scene scene = validScene();
+        scene.obstacles[0].center.y() = 1.2; // reaches 1.45: inside the 0.5 m headroom
+        QVERIFY(SceneValidator::check(scene).ok());
+        scene.obstacles[0].center.y() = 1.4;
+        const std::string message = validationError(scene);
+        QCOMPARE(message, std::string("tank.json: obstacles[0] (\"Obstacle\") reaches outside the "
+                                      "domain (container plus headroom): max.y = 1.65 > 1.5"));
+    }
+
+    void particleCountIsCapped() {
+        Scene scene = validScene();
+        scene.solver.particleSpacing = 0.001; // 0.25 m³ → 250 million particles
+        const std::string message = validationError(scene);
+        QVERIFY2(contains(message, "tank.json: the fluid blocks hold about 250.0 million particles "
+                                   "at solver.particle_spacing = 0.001 m; the limit is 20 million"),
+                 message.c_str());
+    }
+
+    void overlapsAreWarnings() {
+        Scene scene = validScene();
+        scene.obstacles[0].center.x() = 0.5;
+        FluidBlock second;
+        second.name = "Second";
+        second.min = Vec3d(0.4, 0.0, 0.0);
+        second.max = Vec3d(0.8, 0.4, 0.6);
+        scene.fluidBlocks.push_back(second);
+        const std::vector<std::string> warnings = validateScene(scene);
+        QCOMPARE(warnings.size(), std::size_t(3));
+        QVERIFY2(contains(warnings[0], "fluid_blocks[0] (\"Water\") overlaps fluid_blocks[1] "
+                                       "(\"Second\")"),
+                 warnings[0].c_str());
+        QVERIFY2(contains(warnings[1], "fluid_blocks[0] (\"Water\") overlaps obstacles[0]"),
+                 warnings[1].c_str());
+        QVERIFY2(contains(warnings[2], "fluid_blocks[1] (\"Second\") overlaps obstacles[0]"),
+                 warnings[2].c_str());
+    }
+
+    void touchingBoxesDoNotOverlap() {
+        Scene scene = validScene();
+        scene.obstacles[0].center = Vec3d(0.6, 0.25, 0.5); // x from 0.5: touches the block
+        QVERIFY(validateScene(scene).empty());
+    }
+
+    void fieldRangesAreCheckedToo() {
+        Scene scene = validScene();
+        scene.solver.cflFactor = 2.0;
+        scene.sourcePath.clear();
+        QCOMPARE(validationError(scene),
+                 std::string("scene: solver.cfl_factor = 2 is out of range; expected a number in "
+                             "[0.05, 0.6]"));
+    }
+};
+
+QTEST_APPLESS_MAIN(TestSceneValidator)
+#include "TestSceneValidator.moc"
