@@ -49,8 +49,7 @@ std::vector<RigidBody> SceneSetup::buildBodies(const Scene& scene) {
 
     for (const BoxObstacle& obstacle : scene.obstacles) {
         BoundaryParticles surface = BoundarySampler::sampleBox(
-            grown(obstacleBox(obstacle), 0.5 * dx), dx, BoundarySampler::WaterSide::Outside,
-            false);
+            grown(obstacleBox(obstacle), 0.5 * dx), dx, BoundarySampler::WaterSide::Outside, false);
         BoundarySampler::computeVolumes(surface, kernel, dx);
         bodies.emplace_back(obstacle.name, RigidBody::Motion::Static, std::move(surface));
     }

@@ -4,12 +4,11 @@
 #include "sim/SceneSetup.h"
 #include "sph/WcsphSolver.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_reduce.h>
-
 #include <chrono>
 #include <cmath>
 #include <sstream>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
 
 namespace airtrap {
 
@@ -73,7 +72,7 @@ Simulation::Simulation(Scene scene, SimulationState resumeFrom)
 
 Simulation::~Simulation() = default;
 
-Simulation::Advance Simulation::advanceFrame(Interrupter& interrupter) {
+Simulation::Advance Simulation::advanceFrame(Interrupter& interrupter, const StepObserver& onStep) {
     const int nextFrame = state_.frame + 1;
     const double target = scene_.frameTime(nextFrame);
     const double start = state_.time;
@@ -91,10 +90,11 @@ Simulation::Advance Simulation::advanceFrame(Interrupter& interrupter) {
         lost += report.removedParticles;
         ++steps;
         checkHealth(report, nextFrame, lost, particlesAtStart);
-        if (state_.time < target) {
-            if (interrupter.wasInterrupted(100.0 * (state_.time - start) / (target - start)))
-                return Advance::Interrupted;
-        }
+        const double fraction = (state_.time - start) / (target - start);
+        if (onStep)
+            onStep(fraction);
+        if (state_.time < target && interrupter.wasInterrupted(100.0 * fraction))
+            return Advance::Interrupted;
     }
 
     state_.frame = nextFrame;
@@ -110,22 +110,21 @@ Simulation::Advance Simulation::advanceFrame(Interrupter& interrupter) {
 
 void Simulation::checkHealth(const StepReport& report, int frame, std::size_t lost,
                              std::size_t particlesAtStart) const {
-    const std::string where = "frame " + std::to_string(frame) + " (t = " +
-                              std::to_string(state_.time) + " s): ";
+    const std::string where =
+        "frame " + std::to_string(frame) + " (t = " + std::to_string(state_.time) + " s): ";
     if (report.nonFinite)
         throw Error(ErrorKind::SimulationBlowUp,
                     where + "the simulation produced NaN or infinite values. Likely cause: a time "
                             "step too large for the forces (lower solver.cfl_factor) or bodies "
                             "overlapping the water at t = 0.");
     if (report.maxDensityDeviation > scene_.solver.maxDensityError)
-        throw Error(ErrorKind::SimulationBlowUp,
-                    where + "density error " + percent(report.maxDensityDeviation) +
-                        " exceeds solver.max_density_error (" +
-                        percent(scene_.solver.maxDensityError) + "). Likely cause: the water " +
-                        "moves at " + std::to_string(report.maxSpeed) +
-                        " m/s, too fast for solver.max_speed = " +
-                        std::to_string(scene_.solver.maxSpeed) +
-                        " m/s (raise it), or solver.cfl_factor is too large.");
+        throw Error(
+            ErrorKind::SimulationBlowUp,
+            where + "density error " + percent(report.maxDensityDeviation) +
+                " exceeds solver.max_density_error (" + percent(scene_.solver.maxDensityError) +
+                "). Likely cause: the water " + "moves at " + std::to_string(report.maxSpeed) +
+                " m/s, too fast for solver.max_speed = " + std::to_string(scene_.solver.maxSpeed) +
+                " m/s (raise it), or solver.cfl_factor is too large.");
     if (lost > std::max<std::size_t>(10, std::size_t(kMaxLostShare * particlesAtStart)))
         throw Error(ErrorKind::SimulationBlowUp,
                     where + std::to_string(lost) +

@@ -5,6 +5,7 @@
 #include "sim/FrameStats.h"
 #include "sim/SimulationState.h"
 
+#include <functional>
 #include <memory>
 
 namespace airtrap {
@@ -27,10 +28,13 @@ public:
     int frame() const { return state_.frame; }
 
     enum class Advance { FrameDone, Interrupted };
+    //! Called after every step with the share (0–1) of the frame done.
+    using StepObserver = std::function<void(double frameFraction)>;
+
     //! Steps until the next frame's time is reached exactly. Checks the interrupter after every
     //! step; when it asks to stop, returns Interrupted and the state is mid-frame (not to be
     //! cached). Throws Error(SimulationBlowUp) naming the frame and likely cause.
-    Advance advanceFrame(Interrupter& interrupter);
+    Advance advanceFrame(Interrupter& interrupter, const StepObserver& onStep = {});
 
     //! Statistics of the last completed frame (or of the initial state).
     const FrameStats& lastFrameStats() const { return lastFrameStats_; }

@@ -7,10 +7,10 @@
 namespace airtrap {
 
 struct SimulationState {
-    int frame = 1;               //!< the frame this state is the end of (1 = initial state)
-    double time = 0.0;           //!< s
-    std::uint64_t steps = 0;     //!< sub-steps taken since t = 0
-    double lastTimeStep = 0.0;   //!< s, Δt of the last sub-step
+    int frame = 1;                    //!< the frame this state is the end of (1 = initial state)
+    double time = 0.0;                //!< s
+    std::uint64_t steps = 0;          //!< sub-steps taken since t = 0
+    double lastTimeStep = 0.0;        //!< s, Δt of the last sub-step
     double lastMaxAcceleration = 0.0; //!< m/s², feeds the next Δt (force criterion)
     std::uint32_t nextParticleId = 0;
     ParticleSet fluid;

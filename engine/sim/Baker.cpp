@@ -1,0 +1,140 @@
+#include "sim/Baker.h"
+
+#include "cache/FrameCache.h"
+#include "core/Error.h"
+#include "scene/SceneJson.h"
+#include "sim/Simulation.h"
+
+#include <chrono>
+#include <memory>
+
+namespace airtrap {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+//! Returns the simulation positioned at the cache's last good frame (or at `firstFrame − 1` when
+//! that is asked for), or null when there is nothing to continue from.
+std::unique_ptr<Simulation> resumeFrom(FrameCache& cache, const Scene& scene, int firstFrame,
+                                       const std::function<void(const std::string&)>& say) {
+    std::vector<std::string> problems;
+    int from = cache.lastGoodFrame(&problems);
+    for (const std::string& problem : problems)
+        say("skipping a damaged frame: " + problem);
+    if (firstFrame > 0) {
+        if (firstFrame - 1 > from)
+            throw Error(ErrorKind::InvalidInput, cache.directory() + ": cannot start at frame " +
+                                                     std::to_string(firstFrame) + ": frame " +
+                                                     std::to_string(firstFrame - 1) +
+                                                     " is not in the cache (last good "
+                                                     "frame: " +
+                                                     std::to_string(from) + ")");
+        from = firstFrame - 1;
+    }
+    cache.truncateAfter(from);
+    if (from == 0)
+        return nullptr;
+    FrameData data = cache.readFrame(from);
+    say("continuing from frame " + std::to_string(from) +
+        " (t = " + std::to_string(data.state.time) + " s)");
+    return std::make_unique<Simulation>(scene, std::move(data.state));
+}
+
+} // namespace
+
+Baker::Baker(Scene scene, BakeOptions options)
+    : scene_(std::move(scene)), options_(std::move(options)) {}
+
+void Baker::report(const std::string& message) const {
+    if (onMessage_)
+        onMessage_(message);
+}
+
+FrameCache Baker::openCache(std::unique_ptr<Simulation>& simulation) {
+    const std::string hash = parameterHash(scene_);
+    const bool continuing = options_.resume || options_.firstFrame > 1;
+    FrameCache cache = continuing && FrameCache::isCache(options_.cacheDir)
+                           ? FrameCache::open(options_.cacheDir)
+                           : FrameCache::create(options_.cacheDir, sceneToJson(scene_), hash,
+                                                scene_.frames.fps, options_.overwrite);
+    if (cache.manifest().parameterHash != hash)
+        throw Error(ErrorKind::InvalidInput,
+                    options_.cacheDir + " was baked from a different scene (parameter hash " +
+                        cache.manifest().parameterHash + ", this scene " + hash +
+                        "); bake into another folder or start again with --overwrite");
+    if (continuing)
+        simulation = resumeFrom(cache, scene_, options_.firstFrame,
+                                [this](const std::string& m) { report(m); });
+    if (!simulation) {
+        simulation = std::make_unique<Simulation>(scene_);
+        cache.writeFrame(simulation->state(), simulation->lastFrameStats());
+        if (onFrame_)
+            onFrame_(1, simulation->lastFrameStats());
+    }
+    return cache;
+}
+
+Simulation::Advance Baker::bakeFrame(Simulation& simulation, FrameCache& cache,
+                                     Interrupter& interrupter, BakeProgress progress) {
+    const auto frameStart = Clock::now();
+    const std::uint64_t stepsAtStart = simulation.state().steps;
+    progress.frame = simulation.frame() + 1;
+    const auto onStep = [&](double frameFraction) {
+        const double elapsed = secondsSince(frameStart);
+        progress.frameFraction = frameFraction;
+        progress.simTime = simulation.state().time;
+        progress.particles = simulation.state().fluid.size();
+        progress.stepsPerSecond =
+            elapsed > 0.0 ? double(simulation.state().steps - stepsAtStart) / elapsed : 0.0;
+        if (onProgress_)
+            onProgress_(progress);
+    };
+    const Simulation::Advance advance = simulation.advanceFrame(interrupter, onStep);
+    if (advance == Simulation::Advance::FrameDone) {
+        cache.writeFrame(simulation.state(), simulation.lastFrameStats());
+        if (onFrame_)
+            onFrame_(simulation.frame(), simulation.lastFrameStats());
+    }
+    return advance;
+}
+
+Baker::Outcome Baker::run(Interrupter& interrupter) {
+    const int lastFrame = options_.lastFrame > 0 ? options_.lastFrame : scene_.frames.endFrame;
+    std::unique_ptr<Simulation> simulation;
+    FrameCache cache = openCache(simulation);
+    cache.setStatus("baking");
+    const int startFrame = simulation->frame();
+    const auto bakeStart = Clock::now();
+    try {
+        while (simulation->frame() < lastFrame) {
+            // A stop that arrived during a frame's last step lets that frame finish and land.
+            if (interrupter.stopRequested()) {
+                cache.setStatus("stopped");
+                return Outcome::Stopped;
+            }
+            BakeProgress progress;
+            progress.lastFrame = lastFrame;
+            const int framesDone = simulation->frame() - startFrame;
+            if (framesDone > 0)
+                progress.etaSeconds =
+                    secondsSince(bakeStart) / framesDone * (lastFrame - simulation->frame());
+            if (bakeFrame(*simulation, cache, interrupter, progress) ==
+                Simulation::Advance::Interrupted) {
+                cache.setStatus("stopped");
+                return Outcome::Stopped;
+            }
+        }
+    } catch (const Error& error) {
+        cache.setStatus(std::string("failed: ") + error.what());
+        throw;
+    }
+    cache.setStatus("complete");
+    return Outcome::Completed;
+}
+
+} // namespace airtrap

@@ -1,0 +1,80 @@
+#pragma once
+// The bake loop both the CLI and the editor run: Scene → Simulation → FrameCache, one frame at a
+// time, every finished frame written atomically before the next one starts, so a stop, a crash or
+// a blow-up never loses a finished frame and `resume` continues bit-for-bit.
+#include "core/Interrupter.h"
+#include "scene/Scene.h"
+#include "sim/FrameStats.h"
+#include "sim/Simulation.h"
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace airtrap {
+
+class FrameCache;
+
+struct BakeOptions {
+    std::string cacheDir;
+    //! Continue from the last good frame of an existing cache of the same scene.
+    bool resume = false;
+    //! Replace an existing cache (only its own files are removed).
+    bool overwrite = false;
+    //! First frame to compute; frame first − 1 must be cached (0 = 2 on a new bake, the frame
+    //! after the last good one when resuming). Frame 1 is the initial state, always written.
+    int firstFrame = 0;
+    //! Last frame to compute (0 = the scene's end frame).
+    int lastFrame = 0;
+};
+
+//! Reported after every step and every frame.
+struct BakeProgress {
+    int frame = 0; //!< the frame being computed
+    int lastFrame = 0;
+    double simTime = 0.0;       //!< s
+    double frameFraction = 0.0; //!< 0–1 of the current frame
+    double stepsPerSecond = 0.0;
+    std::size_t particles = 0;
+    double etaSeconds = -1.0; //!< negative until a frame has finished
+};
+
+class Baker {
+public:
+    using ProgressCallback = std::function<void(const BakeProgress&)>;
+    using FrameCallback = std::function<void(int frame, const FrameStats&)>;
+    using MessageCallback = std::function<void(const std::string&)>;
+
+    enum class Outcome { Completed, Stopped };
+
+    //! The scene must have passed validation.
+    Baker(Scene scene, BakeOptions options);
+
+    void onProgress(ProgressCallback callback) { onProgress_ = std::move(callback); }
+    //! Called after each frame is safely on disk.
+    void onFrame(FrameCallback callback) { onFrame_ = std::move(callback); }
+    //! Notes for the user (skipped corrupt frames, where the bake resumes).
+    void onMessage(MessageCallback callback) { onMessage_ = std::move(callback); }
+
+    //! Runs until the last frame or until the interrupter asks to stop (then after the current
+    //! step, keeping every finished frame). Throws airtrap::Error for bad caches, I/O failures
+    //! and blow-ups; the manifest's status records why the bake ended.
+    Outcome run(Interrupter& interrupter);
+
+private:
+    void report(const std::string& message) const;
+    //! Creates or opens the cache and positions `simulation` at the frame to continue from,
+    //! writing frame 1 on a fresh bake.
+    FrameCache openCache(std::unique_ptr<Simulation>& simulation);
+    Simulation::Advance bakeFrame(Simulation& simulation, FrameCache& cache,
+                                  Interrupter& interrupter, BakeProgress progress);
+
+    Scene scene_;
+    BakeOptions options_;
+    ProgressCallback onProgress_;
+    FrameCallback onFrame_;
+    MessageCallback onMessage_;
+};
+
+} // namespace airtrap
