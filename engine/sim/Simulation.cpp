@@ -108,6 +108,12 @@ Simulation::Advance Simulation::advanceFrame(Interrupter& interrupter, const Ste
     return Advance::FrameDone;
 }
 
+StepReport Simulation::step(double maxTimeStep) {
+    const StepReport report = solver_->step(state_, maxTimeStep);
+    state_.time += report.timeStep;
+    return report;
+}
+
 void Simulation::checkHealth(const StepReport& report, int frame, std::size_t lost,
                              std::size_t particlesAtStart) const {
     const std::string where =

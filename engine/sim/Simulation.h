@@ -36,6 +36,10 @@ public:
     //! cached). Throws Error(SimulationBlowUp) naming the frame and likely cause.
     Advance advanceFrame(Interrupter& interrupter, const StepObserver& onStep = {});
 
+    //! Takes one solver step of at most `maxTimeStep` seconds outside the frame bookkeeping, for
+    //! benchmarks and tests; the state's time advances but no frame is completed.
+    StepReport step(double maxTimeStep);
+
     //! Statistics of the last completed frame (or of the initial state).
     const FrameStats& lastFrameStats() const { return lastFrameStats_; }
 

@@ -1,9 +1,8 @@
 #include "sph/NeighborGrid.h"
 
-#include <tbb/parallel_for.h>
-
 #include <cmath>
 #include <limits>
+#include <tbb/parallel_for.h>
 
 namespace airtrap {
 

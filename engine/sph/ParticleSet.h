@@ -41,9 +41,9 @@ public:
 
     bool operator==(const ParticleSet& other) const = default;
 
-    std::vector<Vec3f> positions;  //!< m
-    std::vector<Vec3f> velocities; //!< m/s
-    std::vector<float> densities;  //!< kg/m³, evolved by the continuity equation (eq. 2)
+    std::vector<Vec3f> positions;   //!< m
+    std::vector<Vec3f> velocities;  //!< m/s
+    std::vector<float> densities;   //!< kg/m³, evolved by the continuity equation (eq. 2)
     std::vector<std::uint32_t> ids; //!< stable identity across the per-step reordering
 };
 

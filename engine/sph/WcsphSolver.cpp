@@ -49,8 +49,22 @@ WcsphSolver::WcsphSolver(const SolverSettings& settings, const Aabb& domain,
       // sits half a spacing outside the container's walls, is inside it.
       gridDomain_(expanded(domain, kernel_.supportRadius())), bodies_(std::move(bodies)),
       boundary_(gridDomain_, kernel_.supportRadius(), static_cast<float>(settings.restDensity)),
-      grid_(gridDomain_, kernel_.supportRadius()) {
+      grid_(gridDomain_, kernel_.supportRadius()), forces_(kernel_, forceConstants()) {
     boundary_.rebuild(bodies_);
+}
+
+ForceConstants WcsphSolver::forceConstants() const {
+    const float c = static_cast<float>(speedOfSound_);
+    const float h = kernel_.smoothingLength();
+    ForceConstants constants;
+    constants.mass = mass_;
+    constants.fluidViscosity = static_cast<float>(settings_.viscosityAlpha) * c * h;
+    constants.wallViscosity = static_cast<float>(settings_.wallViscosity) * c * h;
+    // Water rests one spacing from the boundary layer; half of that is a real contact.
+    constants.contactRadius = 0.5f * spacing_;
+    constants.restitution = static_cast<float>(settings_.wallRestitution);
+    constants.gravity = settings_.gravity.cast<float>();
+    return constants;
 }
 
 float WcsphSolver::pressure(float density) const {
@@ -82,7 +96,11 @@ StepReport WcsphSolver::step(SimulationState& state, double timeToFrameEnd) {
     report.timeStep = chooseTimeStep(report.maxSpeed, state.lastMaxAcceleration, timeToFrameEnd);
     {
         StepPhases::Scope scope(phases_, StepPhases::Forces);
-        report.maxAcceleration = computeRates(fluid, report.timeStep);
+        densityRates_.resize(fluid.size());
+        accelerations_.resize(fluid.size());
+        report.maxAcceleration =
+            forces_.run(fluid, sortedPositions_, pressureOverDensity2_, grid_, boundary_,
+                        report.timeStep, densityRates_, accelerations_);
     }
     {
         StepPhases::Scope scope(phases_, StepPhases::Integrate);
@@ -100,10 +118,15 @@ void WcsphSolver::sortByCell(ParticleSet& fluid, StepReport& report) {
     const auto& order = grid_.order();
     const std::size_t n = order.size();
     reorderScratch_.resize(n);
+    sortedPositions_.resize(n);
     tbb::parallel_for(Range(0, n, 4096), [&](const Range& r) {
         for (std::size_t s = r.begin(); s != r.end(); ++s) {
             const std::uint32_t from = order[s];
-            reorderScratch_.positions[s] = fluid.positions[from];
+            const Vec3f& x = fluid.positions[from];
+            reorderScratch_.positions[s] = x;
+            sortedPositions_.x[s] = x.x();
+            sortedPositions_.y[s] = x.y();
+            sortedPositions_.z[s] = x.z();
             reorderScratch_.velocities[s] = fluid.velocities[from];
             reorderScratch_.densities[s] = fluid.densities[from];
             reorderScratch_.ids[s] = fluid.ids[from];
@@ -164,108 +187,6 @@ void WcsphSolver::shepardFilter(ParticleSet& fluid) {
     fluid.densities.swap(filtered);
 }
 
-double WcsphSolver::computeRates(const ParticleSet& fluid, double dt) {
-    const std::size_t n = fluid.size();
-    densityRates_.resize(n);
-    accelerations_.resize(n);
-    const float radius2 = kernel_.supportRadius() * kernel_.supportRadius();
-    const float h = kernel_.smoothingLength();
-    const float eta2 = 0.01f * h * h; // keeps μ finite for coincident particles
-    const float c = static_cast<float>(speedOfSound_);
-    const float fluidViscosity = static_cast<float>(settings_.viscosityAlpha) * c * h;
-    const float wallViscosity = static_cast<float>(settings_.wallViscosity) * c * h;
-    const float contactRadius2 = 0.25f * spacing_ * spacing_;
-    const float restitution = static_cast<float>(settings_.wallRestitution);
-    const Vec3f gravity = settings_.gravity.cast<float>();
-    const float invDt = static_cast<float>(1.0 / dt);
-    const auto& boundaryGrid = boundary_.grid();
-    const auto& bx = boundary_.positions();
-    const auto& bv = boundary_.velocities();
-    const auto& bn = boundary_.normals();
-    const auto& bpsi = boundary_.psi();
-    const bool hasBoundary = boundary_.size() > 0;
-
-    return parallelMax(n, [&](std::size_t i) {
-        const Vec3f xi = fluid.positions[i];
-        const Vec3f vi = fluid.velocities[i];
-        const float rhoi = fluid.densities[i];
-        const float pi = pressureOverDensity2_[i];
-        const float pressurei = pi * rhoi * rhoi;
-
-        // Water neighbours: eq. 2 and eq. 1 with Monaghan's Π (β = 0).
-        float drho = 0.0f;
-        Vec3f force = Vec3f::Zero();
-        grid_.forEachNeighborRange(xi, [&](std::uint32_t begin, std::uint32_t end) {
-            for (std::uint32_t j = begin; j < end; ++j) {
-                const Vec3f d = xi - fluid.positions[j];
-                const float r2 = d.squaredNorm();
-                if (r2 >= radius2 || j == i)
-                    continue;
-                const Vec3f grad = kernel_.gradient(d, std::sqrt(r2));
-                const Vec3f vij = vi - fluid.velocities[j];
-                drho += vij.dot(grad);
-                const float approach = vij.dot(d);
-                float viscosity = 0.0f;
-                if (approach < 0.0f) {
-                    const float rhoBar = 0.5f * (rhoi + fluid.densities[j]);
-                    viscosity = -fluidViscosity * approach / ((r2 + eta2) * rhoBar);
-                }
-                force -= (pi + pressureOverDensity2_[j] + viscosity) * grad;
-            }
-        });
-        drho *= mass_;
-        Vec3f acceleration = mass_ * force + gravity;
-
-        // Boundary particles: the fluid force F_f of eq. 4 (Akinci et al. 2012) plus wall
-        // friction, and the nearest contact.
-        std::uint32_t contact = 0;
-        float contactDistance2 = contactRadius2;
-        bool touching = false;
-        if (hasBoundary) {
-            boundaryGrid.forEachNeighborRange(xi, [&](std::uint32_t begin, std::uint32_t end) {
-                for (std::uint32_t b = begin; b < end; ++b) {
-                    const Vec3f d = xi - bx[b];
-                    const float r2 = d.squaredNorm();
-                    if (r2 >= radius2)
-                        continue;
-                    const Vec3f grad = kernel_.gradient(d, std::sqrt(r2));
-                    const Vec3f vib = vi - bv[b];
-                    drho += bpsi[b] * vib.dot(grad);
-                    const float approach = vib.dot(d);
-                    float viscosity = 0.0f;
-                    if (approach < 0.0f)
-                        viscosity = -wallViscosity * approach / ((r2 + eta2) * rhoi);
-                    // The wall's pressure is the particle's, extrapolated hydrostatically to
-                    // the wall particle (Adami et al. 2012), so that a floor carries the weight
-                    // of the layer above it instead of half of it.
-                    const float wallPressure =
-                        std::max(0.0f, pressurei + rhoi * gravity.dot(bx[b] - xi));
-                    const float pb = wallPressure / (rhoi * rhoi);
-                    acceleration -= bpsi[b] * (pi + pb + viscosity) * grad;
-                    if (r2 < contactDistance2) {
-                        contactDistance2 = r2;
-                        contact = b;
-                        touching = true;
-                    }
-                }
-            });
-        }
-        densityRates_[i] = drho;
-        const float magnitude = acceleration.norm();
-
-        // Contact impulse J (eq. 4) for a particle that would still approach the body after this
-        // step; a static body has infinite mass, so j = −(1 + ε) m uₙ and J/(mΔt) is added.
-        if (touching) {
-            const Vec3f predicted = vi + static_cast<float>(dt) * acceleration - bv[contact];
-            const float normalSpeed = predicted.dot(bn[contact]);
-            if (normalSpeed < 0.0f)
-                acceleration -= (1.0f + restitution) * normalSpeed * invDt * bn[contact];
-        }
-        accelerations_[i] = acceleration;
-        return magnitude;
-    });
-}
-
 void WcsphSolver::integrate(ParticleSet& fluid, double dt, StepReport& report) {
     const float step = static_cast<float>(dt);
     const double invRest = 1.0 / settings_.restDensity;
@@ -289,6 +210,7 @@ void WcsphSolver::integrate(ParticleSet& fluid, double dt, StepReport& report) {
 
 std::size_t WcsphSolver::allocatedBytes() const {
     return grid_.allocatedBytes() + boundary_.allocatedBytes() +
+           3 * sortedPositions_.x.capacity() * sizeof(float) +
            pressureOverDensity2_.capacity() * sizeof(float) +
            densityRates_.capacity() * sizeof(float) + accelerations_.capacity() * sizeof(Vec3f) +
            reorderScratch_.allocatedBytes();

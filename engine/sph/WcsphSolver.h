@@ -8,6 +8,7 @@
 #include "sim/SimulationState.h"
 #include "sph/BoundaryModel.h"
 #include "sph/CubicSplineKernel.h"
+#include "sph/ForcePass.h"
 #include "sph/NeighborGrid.h"
 #include "sph/StepPhases.h"
 
@@ -55,9 +56,8 @@ public:
 private:
     void sortByCell(ParticleSet& fluid, StepReport& report);
     double computePressures(const ParticleSet& fluid);
-    double chooseTimeStep(double maxSpeed, double lastMaxAcceleration,
-                          double timeToFrameEnd) const;
-    double computeRates(const ParticleSet& fluid, double dt);
+    double chooseTimeStep(double maxSpeed, double lastMaxAcceleration, double timeToFrameEnd) const;
+    ForceConstants forceConstants() const;
     void integrate(ParticleSet& fluid, double dt, StepReport& report);
 
     SolverSettings settings_;
@@ -70,9 +70,11 @@ private:
     std::vector<RigidBody> bodies_;
     BoundaryModel boundary_;
     NeighborGrid grid_;
+    ForcePass forces_;
     StepPhases phases_;
 
     // Per-particle scratch, in the sorted order of the current step.
+    PositionArrays sortedPositions_;
     std::vector<float> pressureOverDensity2_; //!< p/ρ², the pressure term of eq. 1
     std::vector<float> densityRates_;         //!< dρ/dt (eq. 2)
     std::vector<Vec3f> accelerations_;        //!< dv/dt (eq. 1 + contact impulses)

@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Configures and builds Airtrap (Release) into build/, executables in build/bin. Installs nothing:
+# run.sh and test.sh call deps.sh first. With CI set, warnings are errors. Arguments name the
+# targets to build (default: everything, tests included).
+set -euo pipefail
+
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="$root/build"
+
+options=(-DCMAKE_BUILD_TYPE=Release)
+if [[ -n "${CI:-}" ]]; then
+    options+=(-DAIRTRAP_WERROR=ON)
+fi
+
+targets=()
+if [[ $# -gt 0 ]]; then
+    targets=(--target "$@")
+fi
+
+cmake -S "$root" -B "$build" "${options[@]}"
+cmake --build "$build" --parallel "$(nproc)" "${targets[@]}"

@@ -1,0 +1,109 @@
+// The editor's main window comes up with its menus and a working OpenGL 3.3 core viewport.
+// Runs under a real (virtual) X server: QOpenGLWidget crashes on the offscreen platform.
+#include "MainWindow.h"
+#include "ViewportWidget.h"
+
+#include <QAction>
+#include <QMenu>
+#include <QMenuBar>
+#include <QOpenGLContext>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QStatusBar>
+#include <QTemporaryDir>
+#include <QTest>
+
+namespace airtrap {
+
+class TestMainWindow : public QObject {
+    Q_OBJECT
+
+private Q_SLOTS:
+    void initTestCase() {
+        // Keep the window geometry the test saves away from the user's real settings.
+        QStandardPaths::setTestModeEnabled(true);
+        // Start from no saved geometry, so remembersGeometry() cannot pass on a previous run's.
+        QSettings(QStringLiteral("Airtrap"), QStringLiteral("Airtrap")).clear();
+    }
+
+    void showsWithFileMenu() {
+        MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QCOMPARE(window.windowTitle(), QStringLiteral("Airtrap"));
+
+        QMenu* file = window.fileMenu();
+        QVERIFY(file);
+        QVERIFY(window.menuBar()->actions().contains(file->menuAction()));
+        QCOMPARE(file->title(), QStringLiteral("&File"));
+
+        const QList<QAction*> actions = file->actions();
+        QVERIFY(actions.contains(window.openSceneAction()));
+        QVERIFY(window.openSceneAction()->text().startsWith(QStringLiteral("&Open Scene")));
+        QVERIFY(actions.contains(window.quitAction()));
+        QCOMPARE(window.quitAction()->shortcut(), QKeySequence(Qt::CTRL | Qt::Key_Q));
+    }
+
+    void viewportHasCoreContextAndClears() {
+        MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+
+        ViewportWidget* viewport = window.viewport();
+        QVERIFY(viewport);
+        QVERIFY(viewport->isVisible());
+        // The context is created on the first paint, which may follow the expose event.
+        QTRY_VERIFY_WITH_TIMEOUT(viewport->isValid(), 5000);
+        QOpenGLContext* context = viewport->context();
+        QVERIFY(context);
+        QVERIFY(context->isValid());
+        const QSurfaceFormat format = context->format();
+        QCOMPARE(format.profile(), QSurfaceFormat::CoreProfile);
+        QVERIFY2(format.version() >= qMakePair(3, 3), qPrintable(QStringLiteral("OpenGL %1.%2")
+                                                                     .arg(format.majorVersion())
+                                                                     .arg(format.minorVersion())));
+
+        const QImage image = viewport->grabFramebuffer();
+        QVERIFY(!image.isNull());
+        const QSize expected = viewport->size() * viewport->devicePixelRatio();
+        QCOMPARE(image.size(), expected);
+        const QColor centre = image.pixelColor(image.width() / 2, image.height() / 2);
+        QCOMPARE(centre.name(QColor::HexArgb), ViewportWidget::clearColor().name(QColor::HexArgb));
+    }
+
+    void remembersGeometry() {
+        const QSize size(900, 700);
+        {
+            MainWindow window;
+            window.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&window));
+            window.resize(size);
+            QTRY_COMPARE(window.size(), size);
+            QVERIFY(window.close());
+        }
+        MainWindow window;
+        QCOMPARE(window.size(), size);
+    }
+
+    void openSceneNamesItInStatusBar() {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString path = dir.filePath(QStringLiteral("tank.json"));
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(R"({"format_version": 1, "name": "Small tank"})");
+        file.close();
+
+        MainWindow window;
+        QVERIFY(window.openScene(path));
+        QVERIFY(window.statusBar()->currentMessage().contains(QStringLiteral("Small tank")));
+
+        QVERIFY(!window.openScene(dir.filePath(QStringLiteral("missing.json"))));
+        QVERIFY(window.statusBar()->currentMessage().contains(QStringLiteral("missing.json")));
+    }
+};
+
+} // namespace airtrap
+
+QTEST_MAIN(airtrap::TestMainWindow)
+#include "TestMainWindow.moc"
