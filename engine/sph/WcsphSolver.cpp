@@ -49,14 +49,14 @@ WcsphSolver::WcsphSolver(const SolverSettings& settings, const Aabb& domain,
       // sits half a spacing outside the container's walls, is inside it.
       gridDomain_(expanded(domain, kernel_.supportRadius())), bodies_(std::move(bodies)),
       boundary_(gridDomain_, kernel_.supportRadius(), static_cast<float>(settings.restDensity)),
-      grid_(gridDomain_, kernel_.supportRadius()), forces_(kernel_, forceConstants()) {
+      grid_(gridDomain_, kernel_.supportRadius()), passes_(kernel_, interactionConstants()) {
     boundary_.rebuild(bodies_);
 }
 
-ForceConstants WcsphSolver::forceConstants() const {
+InteractionConstants WcsphSolver::interactionConstants() const {
     const float c = static_cast<float>(speedOfSound_);
     const float h = kernel_.smoothingLength();
-    ForceConstants constants;
+    InteractionConstants constants;
     constants.mass = mass_;
     constants.fluidViscosity = static_cast<float>(settings_.viscosityAlpha) * c * h;
     constants.wallViscosity = static_cast<float>(settings_.wallViscosity) * c * h;
@@ -85,26 +85,29 @@ StepReport WcsphSolver::step(SimulationState& state, double timeToFrameEnd) {
     {
         StepPhases::Scope scope(phases_, StepPhases::Neighbours);
         sortByCell(fluid, report);
+        report.maxSpeed =
+            parallelMax(fluid.size(), [&](std::size_t i) { return fluid.velocities[i].norm(); });
     }
+    report.timeStep = chooseTimeStep(report.maxSpeed, state.lastMaxAcceleration, timeToFrameEnd);
+    const InteractionInputs inputs{fluid, sortedPositions_, grid_, boundary_};
     {
         StepPhases::Scope scope(phases_, StepPhases::Density);
         const int interval = settings_.shepardInterval;
         if (interval > 0 && state.steps > 0 && state.steps % interval == 0)
             shepardFilter(fluid);
-        report.maxSpeed = computePressures(fluid);
+        densityRates_.resize(fluid.size());
+        passes_.densityRates(inputs, densityRates_, neighbors_);
+        report.maxDensityDeviation = advanceDensities(fluid, report.timeStep);
     }
-    report.timeStep = chooseTimeStep(report.maxSpeed, state.lastMaxAcceleration, timeToFrameEnd);
     {
         StepPhases::Scope scope(phases_, StepPhases::Forces);
-        densityRates_.resize(fluid.size());
         accelerations_.resize(fluid.size());
-        report.maxAcceleration =
-            forces_.run(fluid, sortedPositions_, pressureOverDensity2_, grid_, boundary_,
-                        report.timeStep, densityRates_, accelerations_);
+        report.maxAcceleration = passes_.accelerations(inputs, neighbors_, pressureOverDensity2_,
+                                                       report.timeStep, accelerations_);
     }
     {
         StepPhases::Scope scope(phases_, StepPhases::Integrate);
-        integrate(fluid, report.timeStep, report);
+        report.nonFinite = integrate(fluid, report.timeStep);
     }
     state.lastMaxAcceleration = report.maxAcceleration;
     state.lastTimeStep = report.timeStep;
@@ -135,13 +138,20 @@ void WcsphSolver::sortByCell(ParticleSet& fluid, StepReport& report) {
     std::swap(fluid, reorderScratch_);
 }
 
-double WcsphSolver::computePressures(const ParticleSet& fluid) {
+double WcsphSolver::advanceDensities(ParticleSet& fluid, double dt) {
     const std::size_t n = fluid.size();
     pressureOverDensity2_.resize(n);
+    const float step = static_cast<float>(dt);
+    const float restDensity = static_cast<float>(settings_.restDensity);
+    const double invRest = 1.0 / settings_.restDensity;
     return parallelMax(n, [&](std::size_t i) {
-        const float rho = fluid.densities[i];
+        // Water does not expand: below ρ₀ the clamped pressure could not push back, and a
+        // particle that drifted low would let its neighbours clump onto it when the flow
+        // converges again (the clamp SPlisHSPlasH applies before its equation of state).
+        const float rho = std::max(restDensity, fluid.densities[i] + step * densityRates_[i]);
+        fluid.densities[i] = rho;
         pressureOverDensity2_[i] = pressure(rho) / (rho * rho);
-        return fluid.velocities[i].norm();
+        return std::abs(rho * invRest - 1.0);
     });
 }
 
@@ -160,57 +170,48 @@ double WcsphSolver::chooseTimeStep(double maxSpeed, double lastMaxAcceleration,
 }
 
 void WcsphSolver::shepardFilter(ParticleSet& fluid) {
-    // ρᵢ = Σⱼ mⱼWᵢⱼ / Σⱼ (mⱼ/ρⱼ)Wᵢⱼ over the water (METHOD-NOTES §2), which removes the slow drift
-    // of the continuity density without the surface deficiency of a plain summation.
+    // ρᵢ = Σⱼ mⱼWᵢⱼ / Σⱼ (mⱼ/ρⱼ)Wᵢⱼ over the water, the particle itself included (METHOD-NOTES §2):
+    // removes the slow drift of the continuity density without the surface deficiency of a
+    // plain summation.
     const std::size_t n = fluid.size();
     const float radius2 = kernel_.supportRadius() * kernel_.supportRadius();
-    std::vector<float>& filtered = densityRates_; // free until the force pass
+    const float selfWeight = kernel_.value(0.0f);
+    std::vector<float>& filtered = densityRates_; // free until the density pass
     filtered.resize(n);
     tbb::parallel_for(Range(0, n, kGrain), [&](const Range& r) {
         for (std::size_t i = r.begin(); i != r.end(); ++i) {
-            const Vec3f xi = fluid.positions[i];
-            float weight = 0.0f;
-            float weightOverDensity = 0.0f;
-            grid_.forEachNeighborRange(xi, [&](std::uint32_t begin, std::uint32_t end) {
-                for (std::uint32_t j = begin; j < end; ++j) {
-                    const float r2 = (xi - fluid.positions[j]).squaredNorm();
-                    if (r2 >= radius2)
-                        continue;
-                    const float w = kernel_.value(std::sqrt(r2));
-                    weight += w;
-                    weightOverDensity += w / fluid.densities[j];
-                }
-            });
+            float weight = selfWeight;
+            float weightOverDensity = selfWeight / fluid.densities[i];
+            sweepNeighbors(grid_, sortedPositions_, i, radius2,
+                           [&](std::uint32_t j, const Vec3f&, float r2) {
+                               const float w = kernel_.value(std::sqrt(r2));
+                               weight += w;
+                               weightOverDensity += w / fluid.densities[j];
+                           });
             filtered[i] = weight / weightOverDensity;
         }
     });
     fluid.densities.swap(filtered);
 }
 
-void WcsphSolver::integrate(ParticleSet& fluid, double dt, StepReport& report) {
+bool WcsphSolver::integrate(ParticleSet& fluid, double dt) {
     const float step = static_cast<float>(dt);
-    const double invRest = 1.0 / settings_.restDensity;
-    const float restDensity = static_cast<float>(settings_.restDensity);
     std::atomic<bool> nonFinite{false};
-    report.maxDensityDeviation = parallelMax(fluid.size(), [&](std::size_t i) {
-        // Symplectic Euler: the new velocity moves the particle.
-        fluid.velocities[i] += step * accelerations_[i];
-        fluid.positions[i] += step * fluid.velocities[i];
-        // Water does not expand: below ρ₀ the clamped pressure could not push back, and a
-        // particle that drifted low would let its neighbours clump onto it when the flow
-        // converges again (the clamp SPlisHSPlasH applies before its equation of state).
-        fluid.densities[i] = std::max(restDensity, fluid.densities[i] + step * densityRates_[i]);
-        if (!fluid.positions[i].allFinite() || !fluid.velocities[i].allFinite() ||
-            !std::isfinite(fluid.densities[i]))
-            nonFinite.store(true, std::memory_order_relaxed);
-        return std::abs(fluid.densities[i] * invRest - 1.0);
+    tbb::parallel_for(Range(0, fluid.size(), kGrain), [&](const Range& r) {
+        for (std::size_t i = r.begin(); i != r.end(); ++i) {
+            // Symplectic Euler: the new velocity moves the particle.
+            fluid.velocities[i] += step * accelerations_[i];
+            fluid.positions[i] += step * fluid.velocities[i];
+            if (!fluid.positions[i].allFinite() || !fluid.velocities[i].allFinite() ||
+                !std::isfinite(fluid.densities[i]))
+                nonFinite.store(true, std::memory_order_relaxed);
+        }
     });
-    report.nonFinite = nonFinite.load();
+    return nonFinite.load();
 }
 
 std::size_t WcsphSolver::allocatedBytes() const {
-    return grid_.allocatedBytes() + boundary_.allocatedBytes() +
-           3 * sortedPositions_.x.capacity() * sizeof(float) +
+    return grid_.allocatedBytes() + boundary_.allocatedBytes() + sortedPositions_.allocatedBytes() +
            pressureOverDensity2_.capacity() * sizeof(float) +
            densityRates_.capacity() * sizeof(float) + accelerations_.capacity() * sizeof(Vec3f) +
            reorderScratch_.allocatedBytes();

@@ -8,7 +8,7 @@
 #include "sim/SimulationState.h"
 #include "sph/BoundaryModel.h"
 #include "sph/CubicSplineKernel.h"
-#include "sph/ForcePass.h"
+#include "sph/InteractionPass.h"
 #include "sph/NeighborGrid.h"
 #include "sph/StepPhases.h"
 
@@ -55,10 +55,12 @@ public:
 
 private:
     void sortByCell(ParticleSet& fluid, StepReport& report);
-    double computePressures(const ParticleSet& fluid);
+    //! ρ ← max(ρ₀, ρ + Δt dρ/dt) and the pressure terms p/ρ²; returns max |ρ/ρ₀ − 1|.
+    double advanceDensities(ParticleSet& fluid, double dt);
     double chooseTimeStep(double maxSpeed, double lastMaxAcceleration, double timeToFrameEnd) const;
-    ForceConstants forceConstants() const;
-    void integrate(ParticleSet& fluid, double dt, StepReport& report);
+    InteractionConstants interactionConstants() const;
+    //! v ← v + Δt a, x ← x + Δt v; returns whether a NaN or infinity appeared.
+    bool integrate(ParticleSet& fluid, double dt);
 
     SolverSettings settings_;
     CubicSplineKernel kernel_;
@@ -70,11 +72,12 @@ private:
     std::vector<RigidBody> bodies_;
     BoundaryModel boundary_;
     NeighborGrid grid_;
-    ForcePass forces_;
+    InteractionPass passes_;
     StepPhases phases_;
 
     // Per-particle scratch, in the sorted order of the current step.
     PositionArrays sortedPositions_;
+    NeighborList neighbors_;
     std::vector<float> pressureOverDensity2_; //!< p/ρ², the pressure term of eq. 1
     std::vector<float> densityRates_;         //!< dρ/dt (eq. 2)
     std::vector<Vec3f> accelerations_;        //!< dv/dt (eq. 1 + contact impulses)

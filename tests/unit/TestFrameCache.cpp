@@ -1,7 +1,7 @@
 // The cache folder: round trip through the manifest, damaged frames named and skipped, resume
 // helpers, refusing to clobber, and I/O failures that leave the cache consistent.
-#include "core/AtomicFile.h"
 #include "cache/FrameCache.h"
+#include "core/AtomicFile.h"
 #include "unit/CacheTestData.h"
 
 #include <QTemporaryDir>

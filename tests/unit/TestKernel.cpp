@@ -3,7 +3,6 @@
 #include "sph/CubicSplineKernel.h"
 
 #include <QtTest>
-
 #include <cmath>
 
 using namespace airtrap;
@@ -62,11 +61,25 @@ private Q_SLOTS:
             const float numeric = (kernel.value(r + eps) - kernel.value(r - eps)) / (2 * eps);
             const float analytic = kernel.gradient(Vec3f(r, 0, 0), r).x();
             QVERIFY2(std::abs(numeric - analytic) < 1e-3f * std::abs(analytic),
-                     qPrintable(QString("r=%1 numeric %2 analytic %3")
-                                    .arg(r)
-                                    .arg(numeric)
-                                    .arg(analytic)));
+                     qPrintable(
+                         QString("r=%1 numeric %2 analytic %3").arg(r).arg(numeric).arg(analytic)));
         }
+    }
+
+    void tabulatedGradientMatchesAnalytic() {
+        const CubicSplineKernel kernel(0.1f);
+        // |∇W| peaks at q = 1/3; the table's error is measured against that scale.
+        const float peak = kernel.gradient(Vec3f(0.1f / 3, 0, 0), 0.1f / 3).norm();
+        for (float r = 0.1f / 16; r < 0.1f; r += 0.00037f) {
+            const Vec3f d = Vec3f(0.3f, -0.5f, 0.8f).normalized() * r;
+            const Vec3f exact = kernel.gradient(d, r);
+            const Vec3f table = kernel.gradientFromSquared(d, r * r);
+            QVERIFY2(
+                (exact - table).norm() <= 1e-4f * exact.norm() + 1e-3f,
+                qPrintable(QString("r=%1: %2 vs %3").arg(r).arg(exact.norm()).arg(table.norm())));
+            QVERIFY((kernel.gradientFromSquared(-d, r * r) + table).norm() == 0.0f);
+        }
+        QCOMPARE(kernel.gradientFromSquared(Vec3f(0.1f, 0, 0), 0.01f), Vec3f::Zero());
     }
 };
 

@@ -3,7 +3,6 @@
 #include "sph/NeighborGrid.h"
 
 #include <QtTest>
-
 #include <algorithm>
 #include <random>
 #include <set>

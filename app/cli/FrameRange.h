@@ -1,0 +1,31 @@
+#pragma once
+// `--frames A:B` of bake and export: "A:B", "A:", ":B" or a single frame "N".
+#include <string>
+
+namespace airtrap::cli {
+
+class FrameRange {
+public:
+    //! The whole range 1..maxFrame, nothing given.
+    explicit FrameRange(int maxFrame) : first_(1), last_(maxFrame) {}
+
+    //! Parses `text` (empty = the whole range). A missing end takes 1 or `maxFrame`. Throws
+    //! Error(InvalidInput) naming the option, the value and the allowed range, where
+    //! `maxDescription` says where `maxFrame` comes from ("frames.end_frame", "the cache").
+    static FrameRange parse(const std::string& text, int maxFrame,
+                            const std::string& maxDescription);
+
+    int first() const { return first_; }
+    int last() const { return last_; }
+    bool firstGiven() const { return firstGiven_; }
+    bool lastGiven() const { return lastGiven_; }
+    bool contains(int frame) const { return frame >= first_ && frame <= last_; }
+
+private:
+    int first_;
+    int last_;
+    bool firstGiven_ = false;
+    bool lastGiven_ = false;
+};
+
+} // namespace airtrap::cli

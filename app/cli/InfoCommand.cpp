@@ -1,0 +1,42 @@
+#include "InfoCommand.h"
+
+#include "InfoReport.h"
+#include "cache/FrameCache.h"
+#include "core/Error.h"
+
+#include <iostream>
+
+namespace airtrap::cli {
+
+void InfoCommand::addTo(CLI::App& parent) {
+    app_ = parent.add_subcommand("info", "Describe one frame of a cache");
+    app_->add_option("DIR", cacheDir_, "Cache folder")->required();
+    app_->add_option("--frame", frame_, "Frame to describe (default: the last good frame)")
+        ->check(CLI::PositiveNumber);
+    app_->add_flag("--json", json_, "Print one JSON object (fields as in DESIGN §5)");
+}
+
+ExitCode InfoCommand::run() {
+    const FrameCache cache = FrameCache::open(cacheDir_);
+    int frame = frame_;
+    if (frame == 0) {
+        std::vector<std::string> problems;
+        frame = cache.lastGoodFrame(&problems);
+        for (const std::string& problem : problems)
+            std::cerr << "note: skipping a damaged frame: " << problem << '\n';
+        if (cache.frames().empty())
+            throw Error(ErrorKind::InvalidInput, cache.directory() + " holds no frames yet");
+        if (frame == 0)
+            throw Error(ErrorKind::CacheCorrupt,
+                        cache.directory() + ": every cached frame is damaged");
+    }
+    const FrameData data = cache.readFrame(frame);
+    const InfoReport report(data, cache.manifest(), cache.directory());
+    if (json_)
+        std::cout << report.toJson().dump(2) << '\n';
+    else
+        report.printText(std::cout);
+    return ExitCode::Success;
+}
+
+} // namespace airtrap::cli

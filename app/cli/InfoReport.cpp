@@ -1,0 +1,98 @@
+#include "InfoReport.h"
+
+#include <cstdio>
+#include <limits>
+
+namespace airtrap::cli {
+
+namespace {
+
+nlohmann::ordered_json vector(const Vec3f& v) {
+    return {double(v.x()), double(v.y()), double(v.z())};
+}
+
+//! [[min x, y, z], [max x, y, z]] of the particle positions; null when there are none.
+nlohmann::ordered_json bounds(const ParticleSet& fluid) {
+    if (fluid.empty())
+        return nullptr;
+    Vec3f low = Vec3f::Constant(std::numeric_limits<float>::infinity());
+    Vec3f high = -low;
+    for (const Vec3f& p : fluid.positions) {
+        low = low.cwiseMin(p);
+        high = high.cwiseMax(p);
+    }
+    return {vector(low), vector(high)};
+}
+
+std::string fixed(double value, int decimals) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.*f", decimals, value);
+    return text;
+}
+
+} // namespace
+
+InfoReport::InfoReport(const FrameData& frame, const CacheManifest& manifest, std::string directory)
+    : frame_(frame), manifest_(manifest), directory_(std::move(directory)) {}
+
+nlohmann::ordered_json InfoReport::fluidJson() const {
+    return {{"count", frame_.state.fluid.size()},
+            {"bounds", bounds(frame_.state.fluid)},
+            {"max_speed", frame_.stats.maxSpeed},
+            {"mean_density", frame_.stats.meanDensity}};
+}
+
+nlohmann::ordered_json InfoReport::timingJson() const {
+    nlohmann::ordered_json timing = {{"wall_seconds", frame_.stats.wallSeconds}};
+    for (const auto& [phase, seconds] : frame_.stats.phaseSeconds)
+        timing[phase] = seconds;
+    return timing;
+}
+
+nlohmann::ordered_json InfoReport::cacheJson() const {
+    nlohmann::ordered_json frames = nlohmann::ordered_json::array();
+    for (const CacheFrameEntry& entry : manifest_.frames)
+        frames.push_back(entry.frame);
+    return {{"directory", directory_},
+            {"frames", frames},
+            {"status", manifest_.status},
+            {"parameter_hash", manifest_.parameterHash},
+            {"fps", manifest_.fps}};
+}
+
+nlohmann::ordered_json InfoReport::toJson() const {
+    return {{"frame", frame_.state.frame},
+            {"time", frame_.state.time},
+            {"steps", frame_.state.steps},
+            {"fluid", fluidJson()},
+            // Rigid bodies are not part of the cached state yet: the container and obstacles are
+            // static and rebuilt from the scene.
+            {"bodies", nlohmann::ordered_json::array()},
+            {"timing", timingJson()},
+            {"cache", cacheJson()}};
+}
+
+void InfoReport::printText(std::ostream& out) const {
+    const SimulationState& state = frame_.state;
+    out << "cache   " << directory_ << " (" << manifest_.frames.size() << " frames, status "
+        << manifest_.status << ")\n";
+    out << "frame   " << state.frame << "  t = " << fixed(state.time, 4) << " s  " << state.steps
+        << " steps\n";
+    out << "water   " << state.fluid.size() << " particles, max speed "
+        << fixed(frame_.stats.maxSpeed, 3) << " m/s, mean density "
+        << fixed(frame_.stats.meanDensity, 2) << " kg/m³\n";
+    const nlohmann::ordered_json box = bounds(state.fluid);
+    if (!box.is_null()) {
+        out << "bounds ";
+        for (const auto& corner : box)
+            out << " (" << fixed(corner[0], 3) << ", " << fixed(corner[1], 3) << ", "
+                << fixed(corner[2], 3) << ")";
+        out << " m\n";
+    }
+    out << "timing  " << fixed(frame_.stats.wallSeconds, 3) << " s wall";
+    for (const auto& [phase, seconds] : frame_.stats.phaseSeconds)
+        out << ", " << phase << " " << fixed(seconds, 3) << " s";
+    out << '\n';
+}
+
+} // namespace airtrap::cli

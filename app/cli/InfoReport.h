@@ -1,0 +1,33 @@
+#pragma once
+// What `info` says about one cached frame: the JSON object of DESIGN §5 (with the fields that
+// exist in this version; fields are added, never renamed) and a short text for people.
+#include "cache/CacheManifest.h"
+#include "cache/FrameFile.h"
+
+#include <nlohmann/json.hpp>
+#include <ostream>
+#include <string>
+
+namespace airtrap::cli {
+
+class InfoReport {
+public:
+    InfoReport(const FrameData& frame, const CacheManifest& manifest, std::string directory);
+
+    //! `frame`, `time`, `steps`, `fluid`, `bodies`, `timing`, `cache`. No `bubbles` yet: this
+    //! version has none, and an empty stand-in would read as "no bubbles were trapped".
+    nlohmann::ordered_json toJson() const;
+    //! A few lines for a terminal.
+    void printText(std::ostream& out) const;
+
+private:
+    nlohmann::ordered_json fluidJson() const;
+    nlohmann::ordered_json timingJson() const;
+    nlohmann::ordered_json cacheJson() const;
+
+    const FrameData& frame_;
+    const CacheManifest& manifest_;
+    std::string directory_;
+};
+
+} // namespace airtrap::cli

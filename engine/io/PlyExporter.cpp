@@ -1,0 +1,67 @@
+#include "io/PlyExporter.h"
+
+#include "core/AtomicFile.h"
+
+#include <bit>
+#include <cstdio>
+#include <cstring>
+
+namespace airtrap {
+
+// Values are copied as they are in memory; the body is declared little-endian.
+static_assert(std::endian::native == std::endian::little,
+              "PLY bodies are written little-endian; a big-endian host needs byte swapping");
+
+namespace {
+
+std::string header(std::size_t count, const std::vector<std::string>& comments) {
+    std::string text = "ply\nformat binary_little_endian 1.0\n";
+    for (const std::string& comment : comments) {
+        // A newline inside a comment would end the header line early and break the file.
+        std::string line = comment;
+        for (char& c : line)
+            if (c == '\n' || c == '\r')
+                c = ' ';
+        text += "comment " + line + "\n";
+    }
+    text += "element vertex " + std::to_string(count) + "\n";
+    for (const char* name : {"x", "y", "z", "vx", "vy", "vz", "density"})
+        text += std::string("property float ") + name + "\n";
+    text += "property uint id\nend_header\n";
+    return text;
+}
+
+void append(std::uint8_t*& out, const void* value, std::size_t size) {
+    std::memcpy(out, value, size);
+    out += size;
+}
+
+} // namespace
+
+std::vector<std::uint8_t> PlyExporter::encode(const ParticleSet& particles,
+                                              const std::vector<std::string>& comments) {
+    const std::string head = header(particles.size(), comments);
+    std::vector<std::uint8_t> bytes(head.size() + particles.size() * kVertexBytes);
+    std::memcpy(bytes.data(), head.data(), head.size());
+    std::uint8_t* out = bytes.data() + head.size();
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+        append(out, particles.positions[i].data(), 3 * sizeof(float));
+        append(out, particles.velocities[i].data(), 3 * sizeof(float));
+        append(out, &particles.densities[i], sizeof(float));
+        append(out, &particles.ids[i], sizeof(std::uint32_t));
+    }
+    return bytes;
+}
+
+void PlyExporter::write(const std::string& path, const ParticleSet& particles,
+                        const std::vector<std::string>& comments) {
+    AtomicFile::write(path, encode(particles, comments));
+}
+
+std::string PlyExporter::fileName(int frame) {
+    char name[32];
+    std::snprintf(name, sizeof name, "particles_%04d.ply", frame);
+    return name;
+}
+
+} // namespace airtrap

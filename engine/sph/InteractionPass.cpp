@@ -1,0 +1,175 @@
+#include "sph/InteractionPass.h"
+
+#include <algorithm>
+#include <cmath>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
+
+namespace airtrap {
+
+namespace {
+using Range = tbb::blocked_range<std::size_t>;
+constexpr std::size_t kGrain = 512;
+} // namespace
+
+InteractionPass::InteractionPass(const CubicSplineKernel& kernel,
+                                 const InteractionConstants& constants)
+    : kernel_(kernel), constants_(constants),
+      radius2_(kernel.supportRadius() * kernel.supportRadius()),
+      // Keeps μ of the artificial viscosity finite for coincident particles (0.01h², Monaghan).
+      eta2_(0.01f * kernel.smoothingLength() * kernel.smoothingLength()) {}
+
+void InteractionPass::densityRates(const InteractionInputs& in, std::vector<float>& rates,
+                                   NeighborList& neighbors) const {
+    neighbors.resize(in.fluid.size());
+    tbb::parallel_for(Range(0, in.fluid.size(), kGrain), [&](const Range& r) {
+        std::uint32_t found[NeighborList::kCapacity + 1];
+        for (std::size_t i = r.begin(); i != r.end(); ++i) {
+            const Vec3f vi = in.fluid.velocities[i];
+            float rate = 0.0f;
+            std::uint32_t count = 0;
+            sweepNeighbors(in.grid, in.positions, i, radius2_,
+                           [&](std::uint32_t j, const Vec3f& d, float r2) {
+                               const Vec3f grad = kernel_.gradientFromSquared(d, r2);
+                               rate += (vi - in.fluid.velocities[j]).dot(grad);
+                               found[std::min(count, NeighborList::kCapacity)] = j;
+                               ++count;
+                           });
+            neighbors.store(i, found, count);
+            rates[i] = constants_.mass * rate + boundaryDensityRate(i, in);
+        }
+    });
+}
+
+float InteractionPass::boundaryDensityRate(std::size_t i, const InteractionInputs& in) const {
+    const BoundaryModel& boundary = in.boundary;
+    if (boundary.size() == 0)
+        return 0.0f;
+    const auto& bx = boundary.positions();
+    const auto& bv = boundary.velocities();
+    const auto& bpsi = boundary.psi();
+    const Vec3f xi = in.positions[i];
+    const Vec3f vi = in.fluid.velocities[i];
+    float rate = 0.0f;
+    boundary.grid().forEachNeighborRange(xi, [&](std::uint32_t begin, std::uint32_t end) {
+        for (std::uint32_t b = begin; b < end; ++b) {
+            const Vec3f d = xi - bx[b];
+            const float r2 = d.squaredNorm();
+            if (r2 < radius2_)
+                rate += bpsi[b] * (vi - bv[b]).dot(kernel_.gradientFromSquared(d, r2));
+        }
+    });
+    return rate;
+}
+
+double InteractionPass::accelerations(const InteractionInputs& in, const NeighborList& neighbors,
+                                      const std::vector<float>& pressureTerms, double dt,
+                                      std::vector<Vec3f>& accelerations) const {
+    const float step = static_cast<float>(dt);
+    return tbb::parallel_reduce(
+        Range(0, in.fluid.size(), kGrain), 0.0,
+        [&](const Range& r, double largest) {
+            for (std::size_t i = r.begin(); i != r.end(); ++i) {
+                Contact contact;
+                Vec3f acceleration = constants_.mass * waterForce(i, in, neighbors, pressureTerms) +
+                                     constants_.gravity +
+                                     boundaryForce(i, in, pressureTerms[i], contact);
+                // The impulse is left out of the time-step criterion: it is a velocity change
+                // applied once, not a force the step must resolve.
+                largest = std::max(largest, double(acceleration.norm()));
+                if (contact.boundaryParticle >= 0)
+                    acceleration += contactImpulse(in.fluid.velocities[i], acceleration, contact,
+                                                   in.boundary, step);
+                accelerations[i] = acceleration;
+            }
+            return largest;
+        },
+        [](double a, double b) { return std::max(a, b); });
+}
+
+Vec3f InteractionPass::waterForce(std::size_t i, const InteractionInputs& in,
+                                  const NeighborList& neighbors,
+                                  const std::vector<float>& pressureTerms) const {
+    const Vec3f xi = in.positions[i];
+    const Vec3f vi = in.fluid.velocities[i];
+    const float rhoi = in.fluid.densities[i];
+    const float pi = pressureTerms[i];
+    Vec3f force = Vec3f::Zero();
+    const auto addPair = [&](std::uint32_t j, const Vec3f& d, float r2) {
+        const Vec3f grad = kernel_.gradientFromSquared(d, r2);
+        const Vec3f vij = vi - in.fluid.velocities[j];
+        const float approach = vij.dot(d);
+        float viscosity = 0.0f; // Monaghan's Π with β = 0, only for approaching pairs
+        if (approach < 0.0f) {
+            const float rhoBar = 0.5f * (rhoi + in.fluid.densities[j]);
+            viscosity = -constants_.fluidViscosity * approach / ((r2 + eta2_) * rhoBar);
+        }
+        force -= (pi + pressureTerms[j] + viscosity) * grad;
+    };
+    if (neighbors.overflowed(i)) {
+        sweepNeighbors(in.grid, in.positions, i, radius2_, addPair);
+        return force;
+    }
+    const std::uint32_t* list = neighbors.neighbors(i);
+    for (std::uint32_t k = 0, n = neighbors.count(i); k < n; ++k) {
+        const std::uint32_t j = list[k];
+        const Vec3f d = xi - in.positions[j];
+        addPair(j, d, d.squaredNorm());
+    }
+    return force;
+}
+
+Vec3f InteractionPass::boundaryForce(std::size_t i, const InteractionInputs& in, float pressureTerm,
+                                     Contact& contact) const {
+    const BoundaryModel& boundary = in.boundary;
+    if (boundary.size() == 0)
+        return Vec3f::Zero();
+    const auto& bx = boundary.positions();
+    const auto& bv = boundary.velocities();
+    const auto& bpsi = boundary.psi();
+    const Vec3f xi = in.positions[i];
+    const Vec3f vi = in.fluid.velocities[i];
+    const float rhoi = in.fluid.densities[i];
+    const float pressurei = pressureTerm * rhoi * rhoi;
+    contact.distance2 = constants_.contactRadius * constants_.contactRadius;
+    Vec3f force = Vec3f::Zero();
+    boundary.grid().forEachNeighborRange(xi, [&](std::uint32_t begin, std::uint32_t end) {
+        for (std::uint32_t b = begin; b < end; ++b) {
+            const Vec3f d = xi - bx[b];
+            const float r2 = d.squaredNorm();
+            if (r2 >= radius2_)
+                continue;
+            const Vec3f grad = kernel_.gradientFromSquared(d, r2);
+            const float approach = (vi - bv[b]).dot(d);
+            float viscosity = 0.0f;
+            if (approach < 0.0f)
+                viscosity = -constants_.wallViscosity * approach / ((r2 + eta2_) * rhoi);
+            // The wall's pressure is the particle's, extrapolated hydrostatically to the wall
+            // particle (Adami et al. 2012), so that a floor carries the weight of the layer above
+            // it instead of half of it.
+            const float wallPressure =
+                std::max(0.0f, pressurei + rhoi * constants_.gravity.dot(bx[b] - xi));
+            force -= bpsi[b] * (pressureTerm + wallPressure / (rhoi * rhoi) + viscosity) * grad;
+            if (r2 < contact.distance2) {
+                contact.distance2 = r2;
+                contact.boundaryParticle = b;
+            }
+        }
+    });
+    return force;
+}
+
+Vec3f InteractionPass::contactImpulse(const Vec3f& velocity, const Vec3f& acceleration,
+                                      const Contact& contact, const BoundaryModel& boundary,
+                                      float dt) const {
+    const std::size_t b = static_cast<std::size_t>(contact.boundaryParticle);
+    const Vec3f& normal = boundary.normals()[b];
+    const Vec3f predicted = velocity + dt * acceleration - boundary.velocities()[b];
+    const float normalSpeed = predicted.dot(normal);
+    if (normalSpeed >= 0.0f)
+        return Vec3f::Zero();
+    return (-(1.0f + constants_.restitution) * normalSpeed / dt) * normal;
+}
+
+} // namespace airtrap

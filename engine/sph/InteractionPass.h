@@ -1,0 +1,77 @@
+#pragma once
+// The two neighbour passes of a step. Each particle sums only into its own outputs, so both are
+// parallel without atomics and give the same bits on any number of threads.
+//  1. densityRates: dρ/dt of eq. 2 over water and boundary particles.
+//  2. accelerations: eq. 1 with Monaghan's artificial viscosity, gravity, and the impulse-based
+//     boundary force of eq. 4 (fluid force F_f plus the contact impulse J/Δt) against every body.
+// Two passes rather than one because the pressure of pass 2 must come from the density already
+// advanced with pass 1 (symplectic Euler for the pair ρ, v): with both evaluated from the same old
+// state, the scheme is forward Euler for sound waves, which grow without bound.
+#include "sph/BoundaryModel.h"
+#include "sph/CubicSplineKernel.h"
+#include "sph/NeighborList.h"
+#include "sph/NeighborSweep.h"
+#include "sph/ParticleSet.h"
+
+#include <vector>
+
+namespace airtrap {
+
+//! Constants of the passes, derived once from the solver settings.
+struct InteractionConstants {
+    float mass = 0.0f;           //!< water particle mass, kg
+    float fluidViscosity = 0.0f; //!< α c h of Π between water particles
+    float wallViscosity = 0.0f;  //!< the same against boundary particles (wall friction)
+    float contactRadius = 0.0f;  //!< m, distance below which the contact impulse may act
+    float restitution = 0.0f;    //!< ε of the contact impulse against bodies
+    Vec3f gravity = Vec3f::Zero();
+};
+
+//! The sorted particle data both passes read.
+struct InteractionInputs {
+    const ParticleSet& fluid;
+    const PositionArrays& positions;
+    const NeighborGrid& grid;
+    const BoundaryModel& boundary;
+};
+
+class InteractionPass {
+public:
+    InteractionPass(const CubicSplineKernel& kernel, const InteractionConstants& constants);
+
+    //! dρ/dt of every particle into `rates` (sized by the caller); records each particle's water
+    //! neighbours in `neighbors` for the force pass.
+    void densityRates(const InteractionInputs& in, std::vector<float>& rates,
+                      NeighborList& neighbors) const;
+
+    //! dv/dt of every particle into `accelerations` (sized by the caller), from the pressure term
+    //! p/ρ² of each particle. Returns the largest acceleration without contact impulses, which
+    //! feeds the next Δt.
+    double accelerations(const InteractionInputs& in, const NeighborList& neighbors,
+                         const std::vector<float>& pressureTerms, double dt,
+                         std::vector<Vec3f>& accelerations) const;
+
+private:
+    //! The nearest boundary particle within the contact radius, if any.
+    struct Contact {
+        std::int64_t boundaryParticle = -1;
+        float distance2 = 0.0f;
+    };
+
+    float boundaryDensityRate(std::size_t i, const InteractionInputs& in) const;
+    Vec3f waterForce(std::size_t i, const InteractionInputs& in, const NeighborList& neighbors,
+                     const std::vector<float>& pressureTerms) const;
+    Vec3f boundaryForce(std::size_t i, const InteractionInputs& in, float pressureTerm,
+                        Contact& contact) const;
+    //! J/(mᵢΔt) of eq. 4 for a particle that would still approach the body after this step. A
+    //! static body has infinite mass, so j = −(1 + ε) mᵢ uₙ.
+    Vec3f contactImpulse(const Vec3f& velocity, const Vec3f& acceleration, const Contact& contact,
+                         const BoundaryModel& boundary, float dt) const;
+
+    CubicSplineKernel kernel_;
+    InteractionConstants constants_;
+    float radius2_;
+    float eta2_;
+};
+
+} // namespace airtrap

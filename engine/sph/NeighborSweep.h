@@ -1,0 +1,79 @@
+#pragma once
+// Visits the water neighbours of one particle within the support radius. A branch-free sweep over
+// the 27 surrounding cells keeps the candidates inside the support in a small batch (most of the
+// time goes into this sweep, so it reads only the three coordinate arrays), then the caller's
+// SPH sum runs over the few that remain.
+#include "sph/NeighborGrid.h"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace airtrap {
+
+//! Positions as three separate arrays, in the grid's sorted order.
+struct PositionArrays {
+    std::vector<float> x, y, z;
+    void resize(std::size_t n) {
+        x.resize(n);
+        y.resize(n);
+        z.resize(n);
+    }
+    Vec3f operator[](std::size_t i) const { return Vec3f(x[i], y[i], z[i]); }
+    std::size_t allocatedBytes() const {
+        return (x.capacity() + y.capacity() + z.capacity()) * sizeof(float);
+    }
+};
+
+//! Calls visit(j, d, r²) for every particle j ≠ i with |d| = |xᵢ − xⱼ| < radius.
+template <class Visit>
+void sweepNeighbors(const NeighborGrid& grid, const PositionArrays& positions, std::size_t i,
+                    float radius2, Visit&& visit) {
+    constexpr std::size_t kBatch = 256;
+    std::array<std::uint32_t, kBatch> neighbor;
+    std::array<float, kBatch> distance2;
+    const float* px = positions.x.data();
+    const float* py = positions.y.data();
+    const float* pz = positions.z.data();
+    const Vec3f xi(px[i], py[i], pz[i]);
+    std::size_t count = 0;
+
+    const auto flush = [&] {
+        for (std::size_t k = 0; k < count; ++k) {
+            const std::uint32_t j = neighbor[k];
+            if (j == i)
+                continue; // kept out of the sweep's inner loop, which runs ~8× as often
+            visit(j, Vec3f(xi.x() - px[j], xi.y() - py[j], xi.z() - pz[j]), distance2[k]);
+        }
+        count = 0;
+    };
+    // The distances of a whole row first, in a loop the compiler vectorises; then the cheap
+    // compaction of those inside the support.
+    std::array<float, kBatch> rowDistance2;
+    grid.forEachNeighborRange(xi, [&](std::uint32_t begin, std::uint32_t end) {
+        while (begin < end) {
+            const std::uint32_t chunk = std::min<std::uint32_t>(end - begin, kBatch);
+            if (count + chunk > kBatch)
+                flush();
+            const float* cx = px + begin;
+            const float* cy = py + begin;
+            const float* cz = pz + begin;
+            for (std::uint32_t k = 0; k < chunk; ++k) {
+                const float dx = xi.x() - cx[k];
+                const float dy = xi.y() - cy[k];
+                const float dz = xi.z() - cz[k];
+                rowDistance2[k] = dx * dx + dy * dy + dz * dz;
+            }
+            for (std::uint32_t k = 0; k < chunk; ++k) {
+                neighbor[count] = begin + k;
+                distance2[count] = rowDistance2[k];
+                count += rowDistance2[k] < radius2;
+            }
+            begin += chunk;
+        }
+    });
+    flush();
+}
+
+} // namespace airtrap

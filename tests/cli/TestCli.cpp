@@ -1,0 +1,365 @@
+// airtrap-cli end to end: every verb run as a process on a tiny scene, checking exit codes,
+// messages, the cache left behind, bit-identical resume, Ctrl-C and I/O failures (DESIGN §5, §8).
+#include "cache/FrameCache.h"
+#include "cli/CliTestSupport.h"
+
+#include <QTemporaryDir>
+#include <csignal>
+#include <filesystem>
+#include <sys/resource.h>
+
+using namespace airtrap;
+using namespace airtrap::clitest;
+namespace fs = std::filesystem;
+
+namespace {
+
+//! The state of one cached frame as bytes, without its timing statistics (wall-clock times
+//! differ from run to run; the simulated state must not).
+std::vector<std::uint8_t> stateBytes(const std::string& cacheDir, int frame) {
+    return encodeFrame(FrameCache::open(cacheDir).readFrame(frame).state, FrameStats{});
+}
+
+std::vector<int> framesOf(const std::string& cacheDir) {
+    return FrameCache::open(cacheDir).frames();
+}
+
+std::vector<int> oneTo(int last) {
+    std::vector<int> frames;
+    for (int frame = 1; frame <= last; ++frame)
+        frames.push_back(frame);
+    return frames;
+}
+
+} // namespace
+
+class TestCli : public QObject {
+    Q_OBJECT
+
+    std::unique_ptr<QTemporaryDir> temp_;
+    std::string root_;
+    std::string scene_; //!< tiny scene, 4 frames
+    std::string cache_; //!< where most tests bake to
+
+    std::string path(const std::string& name) const { return root_ + "/" + name; }
+
+    std::string writeScene(const std::string& name, const std::string& text) const {
+        writeText(path(name), text);
+        return path(name);
+    }
+
+    //! Bakes the tiny scene into `dir` and checks that it worked.
+    void bake(const std::string& dir, const QStringList& extra = {}) {
+        const CliResult result = runCli(args({"bake", scene_, "--out", dir}) + extra);
+        QCOMPARE_EXIT(result, 0);
+    }
+
+private Q_SLOTS:
+    void init() {
+        temp_ = std::make_unique<QTemporaryDir>();
+        QVERIFY(temp_->isValid());
+        root_ = temp_->path().toStdString();
+        scene_ = writeScene("tiny.json", tinySceneText(4));
+        cache_ = path("cache");
+    }
+
+    void cleanup() { temp_.reset(); }
+
+    void helpListsTheExitCodes() {
+        const CliResult result = runCli({"--help"});
+        QCOMPARE_EXIT(result, 0);
+        for (const char* part : {"validate", "bake", "info", "export", "Exit codes", "130"})
+            QVERIFY_CONTAINS(result.out, part);
+        QCOMPARE_EXIT(runCli({"bake", "--help"}), 0);
+    }
+
+    void usageErrorsExitOne_data() {
+        QTest::addColumn<QStringList>("arguments");
+        QTest::addColumn<QString>("named");
+        QTest::newRow("unknown verb") << QStringList{"frobnicate"} << "frobnicate";
+        QTest::newRow("no verb") << QStringList{} << "subcommand";
+        QTest::newRow("unknown option")
+            << QStringList{"bake", "s.json", "--out", "x", "--bogus"} << "--bogus";
+        QTest::newRow("missing --out") << QStringList{"bake", "s.json"} << "--out";
+        QTest::newRow("bad threads")
+            << QStringList{"bake", "s.json", "--out", "x", "-j", "many"} << "threads";
+        QTest::newRow("unknown format")
+            << QStringList{"export", "c", "--format", "fbx", "--out", "o"} << "fbx";
+    }
+
+    void usageErrorsExitOne() {
+        QFETCH(QStringList, arguments);
+        QFETCH(QString, named);
+        const CliResult result = runCli(arguments);
+        QCOMPARE_EXIT(result, 1);
+        QVERIFY(result.err.startsWith("airtrap-cli: "));
+        QVERIFY_CONTAINS(result.err, named.toStdString());
+    }
+
+    void validateReportsTheParticleCount() {
+        const CliResult result = runCli(args({"validate", scene_}));
+        QCOMPARE_EXIT(result, 0);
+        QVERIFY_CONTAINS(result.out, "OK: " + scene_ + " (125 particles, 4 frames at 60 fps)");
+    }
+
+    void badScenesExitTwoNamingTheProblem_data() {
+        QTest::addColumn<QString>("text");
+        QTest::addColumn<QStringList>("named");
+        const QString valid = QString::fromStdString(tinySceneText(4));
+        QTest::newRow("malformed JSON")
+            << QString("{\n  \"format_version\": 1,\n  \"name\" 3\n}\n") << QStringList{"line 3"};
+        QTest::newRow("out of range")
+            << QString(valid).replace("\"particle_spacing\": 0.04", "\"particle_spacing\": 5.0")
+            << QStringList{"solver.particle_spacing", "5", "[0.001, 1]"};
+        QTest::newRow("unknown key")
+            << QString(valid).replace("particle_spacing", "partcle_spacing")
+            << QStringList{"partcle_spacing", "particle_spacing"};
+    }
+
+    void badScenesExitTwoNamingTheProblem() {
+        QFETCH(QString, text);
+        QFETCH(QStringList, named);
+        const std::string file = writeScene("bad.json", text.toStdString());
+        for (const QStringList& arguments :
+             {args({"validate", file}), args({"bake", file, "--out", cache_})}) {
+            const CliResult result = runCli(arguments);
+            QCOMPARE_EXIT(result, 2);
+            QVERIFY_CONTAINS(result.err, "airtrap-cli: " + file);
+            for (const QString& part : named)
+                QVERIFY_CONTAINS(result.err, part.toStdString());
+        }
+        QVERIFY2(!fs::exists(cache_), "a refused scene must not touch --out");
+    }
+
+    void badOverrideExitsTwo() {
+        const CliResult result = runCli(args({"validate", scene_, "--set", "solver.cfl_factor=9"}));
+        QCOMPARE_EXIT(result, 2);
+        QVERIFY_CONTAINS(result.err, "--set: solver.cfl_factor = 9");
+    }
+
+    void bakeThenInfoDescribesTheLastFrame() {
+        bake(cache_);
+        QCOMPARE(framesOf(cache_), oneTo(4));
+        QCOMPARE(readJson(cache_ + "/manifest.json").at("status").get<std::string>(),
+                 std::string("complete"));
+        const CliResult result = runCli(args({"info", cache_, "--json"}));
+        QCOMPARE_EXIT(result, 0);
+        const nlohmann::json info = nlohmann::json::parse(result.out.toStdString());
+        QCOMPARE(info.at("frame").get<int>(), 4);
+        QVERIFY(std::abs(info.at("time").get<double>() - 3.0 / 60.0) < 1e-12);
+        QVERIFY(info.at("steps").get<std::uint64_t>() > 0);
+        const nlohmann::json& fluid = info.at("fluid");
+        QCOMPARE(fluid.at("count").get<int>(), 125);
+        QCOMPARE(fluid.at("bounds").size(), std::size_t(2));
+        QVERIFY(fluid.at("max_speed").get<double>() >= 0.0);
+        QVERIFY(std::abs(fluid.at("mean_density").get<double>() - 1000.0) < 50.0);
+        QVERIFY(info.at("bodies").is_array());
+        QVERIFY(info.at("timing").contains("wall_seconds"));
+        QVERIFY(info.at("timing").contains("neighbours"));
+        QCOMPARE(info.at("cache").at("frames"), nlohmann::json({1, 2, 3, 4}));
+        QVERIFY2(!info.contains("bubbles"), "no bubbles in this version: no fake key");
+
+        const CliResult second = runCli(args({"info", cache_, "--frame", "2", "--json"}));
+        QCOMPARE_EXIT(second, 0);
+        QCOMPARE(nlohmann::json::parse(second.out.toStdString()).at("frame").get<int>(), 2);
+        QCOMPARE_EXIT(runCli(args({"info", cache_, "--frame", "9"})), 2);
+        QCOMPARE_EXIT(runCli(args({"info", root_})), 2); // not a cache
+    }
+
+    void existingCacheIsNotClobbered() {
+        bake(cache_);
+        const auto manifest = readBytes(cache_ + "/manifest.json");
+        const CliResult result = runCli(args({"bake", scene_, "--out", cache_}));
+        QCOMPARE_EXIT(result, 2);
+        QVERIFY_CONTAINS(result.err, cache_);
+        QVERIFY_CONTAINS(result.err, "--resume");
+        QVERIFY_CONTAINS(result.err, "--overwrite");
+        QVERIFY(readBytes(cache_ + "/manifest.json") == manifest);
+        bake(cache_, {"--overwrite"});
+        QCOMPARE(framesOf(cache_), oneTo(4));
+    }
+
+    void resumeOfACompleteCacheHasNothingToDo() {
+        bake(cache_);
+        const CliResult result = runCli(args({"bake", scene_, "--out", cache_, "--resume"}));
+        QCOMPARE_EXIT(result, 0);
+        QVERIFY_CONTAINS(result.out, "nothing to do");
+        QCOMPARE(framesOf(cache_), oneTo(4));
+    }
+
+    void resumeRecomputesBitIdentically_data() {
+        QTest::addColumn<QString>("damage");
+        QTest::newRow("last frame deleted") << "delete";
+        QTest::newRow("last frame corrupted") << "corrupt";
+        QTest::newRow("restart at frame 3") << "restart";
+    }
+
+    void resumeRecomputesBitIdentically() {
+        QFETCH(QString, damage);
+        bake(cache_);
+        const auto frame3 = stateBytes(cache_, 3);
+        const auto frame4 = stateBytes(cache_, 4);
+        const std::string last = cache_ + "/frame_0004.atf";
+        QStringList extra = {"--resume"};
+        if (damage == "delete") {
+            fs::remove(last);
+        } else if (damage == "corrupt") {
+            std::vector<std::uint8_t> bytes = readBytes(last);
+            bytes.at(bytes.size() / 2) ^= 0x10;
+            writeBytes(last, bytes);
+        } else {
+            extra = {"--frames", "3:4", "--overwrite"};
+        }
+        const CliResult result = runCli(args({"bake", scene_, "--out", cache_}) + extra);
+        QCOMPARE_EXIT(result, 0);
+        if (damage != "restart")
+            QVERIFY_CONTAINS(result.err, "frame_0004.atf");
+        QCOMPARE(framesOf(cache_), oneTo(4));
+        QVERIFY(FrameCache::open(cache_).verify().empty());
+        QVERIFY2(stateBytes(cache_, 4) == frame4, "resumed frame 4 differs from the original");
+        QVERIFY(stateBytes(cache_, 3) == frame3);
+    }
+
+    void framesOptionIsChecked() {
+        const CliResult reversed =
+            runCli(args({"bake", scene_, "--out", cache_, "--frames", "4:2"}));
+        QCOMPARE_EXIT(reversed, 2);
+        QVERIFY_CONTAINS(reversed.err, "--frames '4:2'");
+        const CliResult beyond = runCli(args({"bake", scene_, "--out", cache_, "--frames", ":9"}));
+        QCOMPARE_EXIT(beyond, 2);
+        QVERIFY_CONTAINS(beyond.err, "1 to 4");
+        // Starting at frame 3 continues a cache; there is none yet.
+        QCOMPARE_EXIT(runCli(args({"bake", scene_, "--out", cache_, "--frames", "3:"})), 2);
+        QVERIFY(!fs::exists(cache_));
+        bake(cache_, {"--frames", ":2"});
+        QCOMPARE(framesOf(cache_), oneTo(2));
+    }
+
+    void ctrlCStopsWithAConsistentResumableCache() {
+        const std::string scene = writeScene("long.json", tinySceneText(200));
+        QProcess process;
+        process.setReadChannel(QProcess::StandardError);
+        process.start(cliPath(), args({"bake", scene, "--out", cache_}));
+        QVERIFY(process.waitForStarted());
+        QByteArray err;
+        // Wait for a few finished frames (one line each when stderr is not a terminal).
+        while (!err.contains("frame 3/200") && process.waitForReadyRead(60000))
+            err += process.readAllStandardError();
+        QVERIFY2(err.contains("frame 3/200"), err.constData());
+        ::kill(pid_t(process.processId()), SIGINT);
+        QVERIFY(process.waitForFinished(60000));
+        err += process.readAllStandardError();
+        QCOMPARE(process.exitStatus(), QProcess::NormalExit);
+        QVERIFY2(process.exitCode() == 130, err.constData());
+        QVERIFY2(err.contains("resume with: airtrap-cli bake"), err.constData());
+
+        QCOMPARE(readJson(cache_ + "/manifest.json").at("status").get<std::string>(),
+                 std::string("stopped"));
+        const std::vector<int> frames = framesOf(cache_);
+        QVERIFY(frames.size() >= 3 && frames.size() < 200);
+        QCOMPARE(frames, oneTo(int(frames.size())));
+        QVERIFY(FrameCache::open(cache_).verify().empty());
+
+        const CliResult resumed = runCli(args({"bake", scene, "--out", cache_, "--resume"}));
+        QCOMPARE_EXIT(resumed, 0);
+        QCOMPARE(framesOf(cache_), oneTo(200));
+    }
+
+    void outUnderAFileIsAnIoError() {
+        writeText(path("plain"), "not a folder");
+        const std::string out = path("plain") + "/cache";
+        const CliResult result = runCli(args({"bake", scene_, "--out", out}));
+        QCOMPARE_EXIT(result, 4);
+        QVERIFY_CONTAINS(result.err, out);
+    }
+
+    void fullDiskStopsKeepingEveryGoodFrame() {
+        // A file-size limit just above one frame file: frames fit, but the manifest, which grows
+        // with every frame, hits the limit mid-bake like a full disk would.
+        bake(path("reference"));
+        const auto limit = rlim_t(fs::file_size(path("reference") + "/frame_0004.atf") + 64);
+        QVERIFY(fs::file_size(path("reference") + "/manifest.json") < limit);
+        const std::string scene = writeScene("long.json", tinySceneText(200));
+        const CliResult result = runCli(args({"bake", scene, "--out", cache_}), [limit] {
+            std::signal(SIGXFSZ, SIG_IGN); // EFBIG instead of death
+            const rlimit small{limit, limit};
+            ::setrlimit(RLIMIT_FSIZE, &small);
+        });
+        QCOMPARE_EXIT(result, 4);
+        QVERIFY_CONTAINS(result.err, cache_);
+        QVERIFY_CONTAINS(result.err, "--resume");
+        const std::vector<int> frames = framesOf(cache_);
+        QVERIFY(frames.size() >= 2 && frames.size() < 200);
+        QCOMPARE(frames, oneTo(int(frames.size())));
+        QVERIFY(FrameCache::open(cache_).verify().empty());
+        for (const auto& entry : fs::directory_iterator(cache_))
+            QVERIFY2(entry.path().extension() != ".tmp", entry.path().c_str());
+        QCOMPARE_EXIT(runCli(args({"bake", scene, "--out", cache_, "--resume", "-q"})), 0);
+        QCOMPARE(framesOf(cache_), oneTo(200));
+    }
+
+    void blowUpExitsFiveKeepingTheGoodFrames() {
+        // Water thrown at the floor at 30 m/s with a speed of sound for 2 m/s compresses far
+        // beyond solver.max_density_error within the first frame.
+        const CliResult result = runCli(args({"bake", scene_, "--out", cache_, "--set",
+                                              "fluid_blocks[0].initial_velocity=0,-30,0"}));
+        QCOMPARE_EXIT(result, 5);
+        QVERIFY_CONTAINS(result.err, "airtrap-cli: frame 2");
+        QVERIFY_CONTAINS(result.err, "Likely cause");
+        QCOMPARE(framesOf(cache_), oneTo(1));
+        QVERIFY(FrameCache::open(cache_).manifest().status.starts_with("failed"));
+    }
+
+    void exportPlyWritesOneFilePerFrame() {
+        bake(cache_);
+        const std::string out = path("ply");
+        QCOMPARE_EXIT(runCli(args({"export", cache_, "--format", "ply", "--out", out})), 0);
+        for (int frame = 1; frame <= 4; ++frame) {
+            const std::string file = out + "/particles_000" + std::to_string(frame) + ".ply";
+            const std::vector<std::uint8_t> bytes = readBytes(file);
+            const std::string text(bytes.begin(), bytes.end());
+            QVERIFY2(text.starts_with("ply\nformat binary_little_endian 1.0\n"), file.c_str());
+            QVERIFY(text.find("\nelement vertex 125\n") != std::string::npos);
+            const std::size_t body = text.find("end_header\n") + 11;
+            QCOMPARE(bytes.size() - body, std::size_t(125 * 32));
+        }
+        const std::string some = path("some");
+        QCOMPARE_EXIT(
+            runCli(args({"export", cache_, "--format", "ply", "--out", some, "--frames", "2:3"})),
+            0);
+        QCOMPARE(std::distance(fs::directory_iterator(some), fs::directory_iterator()), 2);
+        QVERIFY(fs::exists(some + "/particles_0002.ply"));
+    }
+
+    void exportSkipsADamagedFrameAndExitsThree() {
+        bake(cache_);
+        writeBytes(cache_ + "/frame_0002.atf", {1, 2, 3});
+        const std::string out = path("ply");
+        const CliResult result = runCli(args({"export", cache_, "--format", "ply", "--out", out}));
+        QCOMPARE_EXIT(result, 3);
+        QVERIFY_CONTAINS(result.err, "frame_0002.atf");
+        QVERIFY(!fs::exists(out + "/particles_0002.ply"));
+        for (const char* file :
+             {"/particles_0001.ply", "/particles_0003.ply", "/particles_0004.ply"})
+            QVERIFY2(fs::exists(out + file), file);
+    }
+
+    void laterStagesAreNotAvailableYet() {
+        bake(cache_);
+        const std::string out = path("out");
+        for (const char* format : {"vdb", "obj"}) {
+            const CliResult result =
+                runCli(args({"export", cache_, "--format", format, "--out", out}));
+            QCOMPARE_EXIT(result, 6);
+            QVERIFY_CONTAINS(result.err, std::string("airtrap-cli: export format '") + format +
+                                             "' is not available yet");
+            QVERIFY2(!fs::exists(out), "no file for a format that does not exist yet");
+        }
+        const CliResult post = runCli(args({"post", cache_}));
+        QCOMPARE_EXIT(post, 6);
+        QVERIFY_CONTAINS(post.err, "not available yet");
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCli)
+#include "TestCli.moc"

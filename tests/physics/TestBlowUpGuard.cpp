@@ -1,0 +1,80 @@
+// The blow-up guard stops a bake with a message naming the frame and the likely cause, and the
+// Baker keeps every frame finished before it, recording the failure in the manifest. The guard is
+// driven here by a density bound far tighter than the flow can meet, which is exactly the
+// condition it watches for.
+#include "cache/FrameCache.h"
+#include "core/Error.h"
+#include "sim/Baker.h"
+
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace airtrap;
+
+namespace {
+
+Scene collapsingColumn() {
+    Scene scene;
+    scene.solver.particleSpacing = 0.025;
+    scene.solver.maxSpeed = 3.0;
+    scene.frames.fps = 30.0;
+    scene.frames.endFrame = 20;
+    scene.container.max = Vec3d(0.6, 0.4, 0.2);
+    FluidBlock water;
+    water.max = Vec3d(0.15, 0.3, 0.2);
+    scene.fluidBlocks.push_back(water);
+    return scene;
+}
+
+} // namespace
+
+class TestBlowUpGuard : public QObject {
+    Q_OBJECT
+
+private Q_SLOTS:
+    void frameTimesAreMetExactly() {
+        Simulation simulation(collapsingColumn());
+        Interrupter interrupter;
+        for (int frame = 2; frame <= 4; ++frame) {
+            simulation.advanceFrame(interrupter);
+            QCOMPARE(simulation.frame(), frame);
+            QCOMPARE(simulation.state().time, simulation.scene().frameTime(frame));
+        }
+    }
+
+    void densityErrorStopsTheBakeAndKeepsGoodFrames() {
+        Scene scene = collapsingColumn();
+        // The column's impact on the far wall compresses it by well over 0.6 % (at rest it is 0.33
+        // % at the bottom).
+        scene.solver.maxDensityError = 0.006;
+        QTemporaryDir dir;
+        BakeOptions options;
+        options.cacheDir = dir.filePath("cache").toStdString();
+        Baker baker(scene, options);
+        std::vector<int> written;
+        baker.onFrame([&](int frame, const FrameStats&) { written.push_back(frame); });
+        Interrupter interrupter;
+        QString message;
+        try {
+            baker.run(interrupter);
+        } catch (const Error& error) {
+            QCOMPARE(error.kind(), ErrorKind::SimulationBlowUp);
+            message = QString::fromStdString(error.what());
+        }
+        QVERIFY2(!message.isEmpty(), "the bake finished although the bound was exceeded");
+        const int failedFrame = written.back() + 1;
+        QVERIFY2(message.startsWith(QString("frame %1 ").arg(failedFrame)), qPrintable(message));
+        QVERIFY2(message.contains("solver.max_density_error"), qPrintable(message));
+        QVERIFY2(message.contains("Likely cause"), qPrintable(message));
+        QVERIFY(written.size() >= 2); // frame 1 and at least one simulated frame
+
+        const FrameCache cache = FrameCache::open(options.cacheDir);
+        QVERIFY(cache.manifest().status.rfind("failed: frame", 0) == 0);
+        QCOMPARE(cache.frames(), written);
+        for (int frame : written)
+            QCOMPARE(cache.readFrame(frame).state.frame, frame);
+    }
+};
+
+QTEST_APPLESS_MAIN(TestBlowUpGuard)
+#include "TestBlowUpGuard.moc"
