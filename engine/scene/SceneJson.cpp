@@ -241,8 +241,10 @@ void writeSceneFile(const Scene& scene, const std::string& path) {
 
 std::string parameterHash(const Scene& scene) {
     Json canonical = sceneToJson(scene);
-    // The name is a label: renaming a scene must not orphan its cache.
+    // The name is a label, and the end frame only says how far to bake: renaming a scene or
+    // extending its bake must not orphan its cache.
     canonical.erase("name");
+    canonical["frames"].erase("end_frame");
     char hex[17];
     std::snprintf(hex, sizeof hex, "%016llx",
                   static_cast<unsigned long long>(fnv1a64(canonical.dump())));

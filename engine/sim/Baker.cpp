@@ -55,7 +55,7 @@ void Baker::report(const std::string& message) const {
         onMessage_(message);
 }
 
-FrameCache Baker::openCache(std::unique_ptr<Simulation>& simulation) {
+FrameCache Baker::openCache() const {
     const std::string hash = parameterHash(scene_);
     const bool continuing = options_.resume || options_.firstFrame > 1;
     FrameCache cache = continuing && FrameCache::isCache(options_.cacheDir)
@@ -67,6 +67,12 @@ FrameCache Baker::openCache(std::unique_ptr<Simulation>& simulation) {
                     options_.cacheDir + " was baked from a different scene (parameter hash " +
                         cache.manifest().parameterHash + ", this scene " + hash +
                         "); bake into another folder or start again with --overwrite");
+    return cache;
+}
+
+std::unique_ptr<Simulation> Baker::startingPoint(FrameCache& cache) {
+    const bool continuing = options_.resume || options_.firstFrame > 1;
+    std::unique_ptr<Simulation> simulation;
     if (continuing)
         simulation = resumeFrom(cache, scene_, options_.firstFrame,
                                 [this](const std::string& m) { report(m); });
@@ -76,7 +82,7 @@ FrameCache Baker::openCache(std::unique_ptr<Simulation>& simulation) {
         if (onFrame_)
             onFrame_(1, simulation->lastFrameStats());
     }
-    return cache;
+    return simulation;
 }
 
 Simulation::Advance Baker::bakeFrame(Simulation& simulation, FrameCache& cache,
@@ -106,35 +112,51 @@ Simulation::Advance Baker::bakeFrame(Simulation& simulation, FrameCache& cache,
 Baker::Outcome Baker::run(Interrupter& interrupter) {
     const int lastFrame = options_.lastFrame > 0 ? options_.lastFrame : scene_.frames.endFrame;
     std::unique_ptr<Simulation> simulation;
-    FrameCache cache = openCache(simulation);
-    cache.setStatus("baking");
-    const int startFrame = simulation->frame();
-    const auto bakeStart = Clock::now();
+    FrameCache cache = openCache();
     try {
-        while (simulation->frame() < lastFrame) {
-            // A stop that arrived during a frame's last step lets that frame finish and land.
-            if (interrupter.stopRequested()) {
-                cache.setStatus("stopped");
-                return Outcome::Stopped;
-            }
-            BakeProgress progress;
-            progress.lastFrame = lastFrame;
-            const int framesDone = simulation->frame() - startFrame;
-            if (framesDone > 0)
-                progress.etaSeconds =
-                    secondsSince(bakeStart) / framesDone * (lastFrame - simulation->frame());
-            if (bakeFrame(*simulation, cache, interrupter, progress) ==
-                Simulation::Advance::Interrupted) {
-                cache.setStatus("stopped");
-                return Outcome::Stopped;
-            }
-        }
+        simulation = startingPoint(cache);
+        cache.setStatus("baking");
+        const Outcome outcome = bakeFrames(*simulation, cache, interrupter, lastFrame);
+        if (outcome == Outcome::Stopped)
+            cache.setStatus("stopped");
+        else
+            cache.setStatus(lastFrame == scene_.frames.endFrame
+                                ? "complete"
+                                : "baked to frame " + std::to_string(lastFrame));
+        return outcome;
     } catch (const Error& error) {
-        cache.setStatus(std::string("failed: ") + error.what());
+        recordFailure(cache, error);
         throw;
     }
-    cache.setStatus("complete");
+}
+
+Baker::Outcome Baker::bakeFrames(Simulation& simulation, FrameCache& cache,
+                                 Interrupter& interrupter, int lastFrame) {
+    const int startFrame = simulation.frame();
+    const auto bakeStart = Clock::now();
+    while (simulation.frame() < lastFrame) {
+        // A stop that arrived during a frame's last step lets that frame finish and land.
+        if (interrupter.stopRequested())
+            return Outcome::Stopped;
+        BakeProgress progress;
+        progress.lastFrame = lastFrame;
+        const int framesDone = simulation.frame() - startFrame;
+        if (framesDone > 0)
+            progress.etaSeconds =
+                secondsSince(bakeStart) / framesDone * (lastFrame - simulation.frame());
+        if (bakeFrame(simulation, cache, interrupter, progress) == Simulation::Advance::Interrupted)
+            return Outcome::Stopped;
+    }
     return Outcome::Completed;
+}
+
+void Baker::recordFailure(FrameCache& cache, const Error& error) const {
+    // The disk that failed the bake may fail this write too; the original error is what the
+    // user needs to see, so this one is dropped.
+    try {
+        cache.setStatus(std::string("failed: ") + error.what());
+    } catch (const Error&) {
+    }
 }
 
 } // namespace airtrap

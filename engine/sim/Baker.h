@@ -14,6 +14,7 @@
 
 namespace airtrap {
 
+class Error;
 class FrameCache;
 
 struct BakeOptions {
@@ -59,14 +60,19 @@ public:
 
     //! Runs until the last frame or until the interrupter asks to stop (then after the current
     //! step, keeping every finished frame). Throws airtrap::Error for bad caches, I/O failures
-    //! and blow-ups; the manifest's status records why the bake ended.
+    //! and blow-ups; the manifest's status records why the bake ended ("complete", "baked to
+    //! frame N" when stopped short of the scene's end on purpose, "stopped", "failed: …").
     Outcome run(Interrupter& interrupter);
 
 private:
     void report(const std::string& message) const;
-    //! Creates or opens the cache and positions `simulation` at the frame to continue from,
-    //! writing frame 1 on a fresh bake.
-    FrameCache openCache(std::unique_ptr<Simulation>& simulation);
+    //! Creates the cache, or opens it to continue, and checks it belongs to this scene.
+    FrameCache openCache() const;
+    //! The simulation at the frame to continue from; on a fresh bake, frame 1, written.
+    std::unique_ptr<Simulation> startingPoint(FrameCache& cache);
+    Outcome bakeFrames(Simulation& simulation, FrameCache& cache, Interrupter& interrupter,
+                       int lastFrame);
+    void recordFailure(FrameCache& cache, const Error& error) const;
     Simulation::Advance bakeFrame(Simulation& simulation, FrameCache& cache,
                                   Interrupter& interrupter, BakeProgress progress);
 

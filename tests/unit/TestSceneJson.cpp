@@ -273,7 +273,14 @@ private Q_SLOTS:
         renamed.sourcePath = "elsewhere.json";
         QCOMPARE(parameterHash(renamed), hash);
 
+        Scene extended = scene; // baking further continues the same cache
+        extended.frames.endFrame += 30;
+        QCOMPARE(parameterHash(extended), hash);
+
         Scene changed = scene;
+        changed.frames.fps = 24.0;
+        QVERIFY(parameterHash(changed) != hash);
+        changed = scene;
         changed.solver.particleSpacing = 0.021;
         QVERIFY(parameterHash(changed) != hash);
         changed = scene;
