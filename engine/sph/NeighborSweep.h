@@ -32,7 +32,6 @@ void sweepNeighbors(const NeighborGrid& grid, const PositionArrays& positions, s
                     float radius2, Visit&& visit) {
     constexpr std::size_t kBatch = 256;
     std::array<std::uint32_t, kBatch> neighbor;
-    std::array<float, kBatch> distance2;
     const float* px = positions.x.data();
     const float* py = positions.y.data();
     const float* pz = positions.z.data();
@@ -44,7 +43,8 @@ void sweepNeighbors(const NeighborGrid& grid, const PositionArrays& positions, s
             const std::uint32_t j = neighbor[k];
             if (j == i)
                 continue; // kept out of the sweep's inner loop, which runs ~8× as often
-            visit(j, Vec3f(xi.x() - px[j], xi.y() - py[j], xi.z() - pz[j]), distance2[k]);
+            const Vec3f d(xi.x() - px[j], xi.y() - py[j], xi.z() - pz[j]);
+            visit(j, d, d.squaredNorm());
         }
         count = 0;
     };
@@ -67,7 +67,6 @@ void sweepNeighbors(const NeighborGrid& grid, const PositionArrays& positions, s
             }
             for (std::uint32_t k = 0; k < chunk; ++k) {
                 neighbor[count] = begin + k;
-                distance2[count] = rowDistance2[k];
                 count += rowDistance2[k] < radius2;
             }
             begin += chunk;
