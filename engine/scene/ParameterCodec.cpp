@@ -10,20 +10,11 @@ namespace {
 using Json = nlohmann::json;
 using Result = ParameterCodec::Result;
 
-//! Keeps a pasted megabyte of JSON out of a one-line message.
-std::string shortDump(const Json& json) {
-    constexpr std::size_t kMaxLength = 60;
-    std::string text = json.dump();
-    if (text.size() > kMaxLength)
-        text = text.substr(0, kMaxLength) + "…";
-    return text;
-}
-
 Result typeError(const ParameterDeclaration& declaration, const Json& json,
                  const std::string& path) {
     return {{},
             path + ": expected " + ParameterCodec::expectation(declaration) + ", got " +
-                shortDump(json)};
+                ParameterCodec::shortJson(json)};
 }
 
 bool inRange(const ParameterDeclaration& declaration, double number) {
@@ -109,7 +100,7 @@ Result intFromJson(const ParameterDeclaration& declaration, const Json& json,
     // Checked as a double first: an integer beyond long long must not wrap into range.
     if (!inRange(declaration, number))
         return {{},
-                path + " = " + shortDump(json) + " is out of range; expected " +
+                path + " = " + ParameterCodec::shortJson(json) + " is out of range; expected " +
                     ParameterCodec::expectation(declaration)};
     const long long value = json.is_number_float() ? std::llround(number) : json.get<long long>();
     return {value, ParameterCodec::check(declaration, value, path)};
@@ -153,13 +144,6 @@ Result convertJson(const ParameterDeclaration& declaration, const Json& json,
     return typeError(declaration, json, path);
 }
 
-std::string trimmed(const std::string& text) {
-    const auto first = text.find_first_not_of(" \t");
-    if (first == std::string::npos)
-        return {};
-    return text.substr(first, text.find_last_not_of(" \t") - first + 1);
-}
-
 } // namespace
 
 Result ParameterCodec::fromJson(const ParameterDeclaration& declaration, const Json& json,
@@ -169,7 +153,7 @@ Result ParameterCodec::fromJson(const ParameterDeclaration& declaration, const J
 
 Result ParameterCodec::fromText(const ParameterDeclaration& declaration, const std::string& text,
                                 const std::string& path) {
-    const std::string value = trimmed(text);
+    const std::string value = ParameterCodec::trimmed(text);
     Json json = Json::parse(value, nullptr, /*allow_exceptions=*/false);
     const bool isText =
         declaration.kind == ParameterKind::String || declaration.kind == ParameterKind::Choice;
@@ -290,6 +274,21 @@ std::string ParameterCodec::formatNumber(double number) {
     char buffer[64];
     const auto end = std::to_chars(buffer, buffer + sizeof buffer, number).ptr;
     return std::string(buffer, end);
+}
+
+std::string ParameterCodec::shortJson(const Json& json) {
+    constexpr std::size_t kMaxLength = 60;
+    std::string text = json.dump();
+    if (text.size() > kMaxLength)
+        text = text.substr(0, kMaxLength) + "…";
+    return text;
+}
+
+std::string ParameterCodec::trimmed(const std::string& text) {
+    const auto first = text.find_first_not_of(" \t");
+    if (first == std::string::npos)
+        return {};
+    return text.substr(first, text.find_last_not_of(" \t") - first + 1);
 }
 
 } // namespace airtrap

@@ -47,6 +47,10 @@ public:
     static std::string formatValue(const ParameterValue& value);
     //! Shortest text that reads back to the same double; integers without a decimal point.
     static std::string formatNumber(double number);
+    //! A JSON value for a one-line message: a pasted megabyte is cut to its start.
+    static std::string shortJson(const nlohmann::json& json);
+    //! The text without leading and trailing blanks (spaces, tabs).
+    static std::string trimmed(const std::string& text);
 };
 
 } // namespace airtrap

@@ -18,12 +18,6 @@ namespace {
 using Json = nlohmann::json;
 using OrderedJson = nlohmann::ordered_json;
 
-std::string shortDump(const Json& json) {
-    constexpr std::size_t kMaxLength = 60;
-    const std::string text = json.dump();
-    return text.size() > kMaxLength ? text.substr(0, kMaxLength) + "…" : text;
-}
-
 //! Reads a scene through the schema, collecting every problem rather than stopping at the first,
 //! so that one round of editing fixes a file.
 class SceneReader {
@@ -60,21 +54,22 @@ private:
         if (section.isArray)
             readArray(section, value, scene);
         else if (!value.is_object())
-            error(section.key + ": expected an object, got " + shortDump(value));
+            error(section.key + ": expected an object, got " + ParameterCodec::shortJson(value));
         else
             readObject(section, value, 0, scene);
     }
 
     void readArray(const SchemaSection& section, const Json& array, Scene& scene) {
         if (!array.is_array())
-            return error(section.key + ": expected an array of objects, got " + shortDump(array));
+            return error(section.key + ": expected an array of objects, got " +
+                         ParameterCodec::shortJson(array));
         section.resize(scene, array.size());
         for (std::size_t element = 0; element < array.size(); ++element) {
             if (array[element].is_object())
                 readObject(section, array[element], element, scene);
             else
                 error(section.key + "[" + std::to_string(element) + "]: expected an object, got " +
-                      shortDump(array[element]));
+                      ParameterCodec::shortJson(array[element]));
         }
     }
 
@@ -217,7 +212,7 @@ Scene sceneFromJson(const Json& json, const std::string& sourceName) {
     if (!json.is_object())
         throw Error(ErrorKind::InvalidScene, sourceName +
                                                  ": expected a JSON object at the top level, got " +
-                                                 shortDump(json));
+                                                 ParameterCodec::shortJson(json));
     return SceneReader(sourceName).read(SceneMigration::toCurrent(json, sourceName));
 }
 

@@ -11,21 +11,14 @@ namespace {
     throw Error(ErrorKind::InvalidScene, std::string(kOverrideSource) + ": " + message);
 }
 
-std::string trimmed(const std::string& text) {
-    const auto first = text.find_first_not_of(" \t");
-    if (first == std::string::npos)
-        return {};
-    return text.substr(first, text.find_last_not_of(" \t") - first + 1);
-}
-
 } // namespace
 
 void applySceneOverride(Scene& scene, const std::string& assignment) {
     const auto equals = assignment.find('=');
     if (equals == std::string::npos)
         refuse("expected key=value, e.g. solver.particle_spacing=0.02, got \"" + assignment + "\"");
-    const ParameterPath path =
-        SceneSchema::resolve(trimmed(assignment.substr(0, equals)), kOverrideSource);
+    const ParameterPath path = SceneSchema::resolve(
+        ParameterCodec::trimmed(assignment.substr(0, equals)), kOverrideSource);
     const std::size_t count = path.section->elementCount(scene);
     if (path.element >= count)
         refuse(path.section->key + '[' + std::to_string(path.element) + "] does not exist; " +
