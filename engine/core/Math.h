@@ -23,6 +23,10 @@ struct Aabb {
         return (p.array() >= min.array()).all() && (p.array() <= max.array()).all();
     }
     double volume() const { return size().prod(); }
+    //! The box grown by `margin` on every side.
+    Aabb expanded(double margin) const {
+        return {min - Vec3d::Constant(margin), max + Vec3d::Constant(margin)};
+    }
 };
 
 } // namespace airtrap

@@ -9,10 +9,6 @@ namespace airtrap {
 
 namespace {
 
-Aabb grown(const Aabb& box, double margin) {
-    return {box.min - Vec3d::Constant(margin), box.max + Vec3d::Constant(margin)};
-}
-
 Aabb obstacleBox(const BoxObstacle& obstacle) {
     return {obstacle.center - 0.5 * obstacle.size, obstacle.center + 0.5 * obstacle.size};
 }
@@ -28,7 +24,7 @@ bool insideAnyEarlierBlock(const Scene& scene, std::size_t block, const Vec3d& x
 
 bool insideAnyObstacle(const Scene& scene, const Vec3d& x, double margin) {
     for (const BoxObstacle& obstacle : scene.obstacles)
-        if (grown(obstacleBox(obstacle), margin).contains(x))
+        if (obstacleBox(obstacle).expanded(margin).contains(x))
             return true;
     return false;
 }
@@ -40,16 +36,16 @@ std::vector<RigidBody> SceneSetup::buildBodies(const Scene& scene) {
     const CubicSplineKernel kernel(static_cast<float>(scene.supportRadius()));
     std::vector<RigidBody> bodies;
 
-    Aabb tank{scene.container.min, scene.container.max};
-    tank = grown(tank, 0.5 * dx);
+    const Aabb tank = Aabb{scene.container.min, scene.container.max}.expanded(0.5 * dx);
     BoundaryParticles walls =
         BoundarySampler::sampleBox(tank, dx, BoundarySampler::WaterSide::Inside, true);
     BoundarySampler::computeVolumes(walls, kernel, dx);
     bodies.emplace_back("Container", RigidBody::Motion::Static, std::move(walls));
 
     for (const BoxObstacle& obstacle : scene.obstacles) {
-        BoundaryParticles surface = BoundarySampler::sampleBox(
-            grown(obstacleBox(obstacle), 0.5 * dx), dx, BoundarySampler::WaterSide::Outside, false);
+        BoundaryParticles surface =
+            BoundarySampler::sampleBox(obstacleBox(obstacle).expanded(0.5 * dx), dx,
+                                       BoundarySampler::WaterSide::Outside, false);
         BoundarySampler::computeVolumes(surface, kernel, dx);
         bodies.emplace_back(obstacle.name, RigidBody::Motion::Static, std::move(surface));
     }

@@ -1,7 +1,5 @@
 #include "sph/WcsphSolver.h"
 
-#include "rigid/BoundarySampler.h"
-
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -31,10 +29,6 @@ double parallelMax(std::size_t n, F&& f) {
         [](double a, double b) { return std::max(a, b); });
 }
 
-Aabb expanded(const Aabb& box, double margin) {
-    return {box.min - Vec3d::Constant(margin), box.max + Vec3d::Constant(margin)};
-}
-
 } // namespace
 
 WcsphSolver::WcsphSolver(const SolverSettings& settings, const Aabb& domain,
@@ -47,7 +41,7 @@ WcsphSolver::WcsphSolver(const SolverSettings& settings, const Aabb& domain,
       tait_(settings.restDensity * speedOfSound_ * speedOfSound_ / kTaitGamma),
       // The grid reaches one support radius beyond the domain so that the boundary layer, which
       // sits half a spacing outside the container's walls, is inside it.
-      gridDomain_(expanded(domain, kernel_.supportRadius())), bodies_(std::move(bodies)),
+      gridDomain_(domain.expanded(kernel_.supportRadius())), bodies_(std::move(bodies)),
       boundary_(gridDomain_, kernel_.supportRadius(), static_cast<float>(settings.restDensity)),
       grid_(gridDomain_, kernel_.supportRadius()), passes_(kernel_, interactionConstants()) {
     boundary_.rebuild(bodies_);
@@ -212,7 +206,7 @@ bool WcsphSolver::integrate(ParticleSet& fluid, double dt) {
 
 std::size_t WcsphSolver::allocatedBytes() const {
     return grid_.allocatedBytes() + boundary_.allocatedBytes() + sortedPositions_.allocatedBytes() +
-           pressureOverDensity2_.capacity() * sizeof(float) +
+           neighbors_.allocatedBytes() + pressureOverDensity2_.capacity() * sizeof(float) +
            densityRates_.capacity() * sizeof(float) + accelerations_.capacity() * sizeof(Vec3f) +
            reorderScratch_.allocatedBytes();
 }
