@@ -1,5 +1,8 @@
 #include "InfoReport.h"
 
+#include "scene/SceneJson.h"
+#include "sim/SceneSetup.h"
+
 #include <cstdio>
 #include <limits>
 
@@ -60,15 +63,27 @@ nlohmann::ordered_json InfoReport::cacheJson() const {
             {"fps", manifest_.fps}};
 }
 
+nlohmann::ordered_json InfoReport::bodiesJson() const {
+    // The container and obstacles are static: their poses come from the scene the cache was
+    // baked from, the same way the solver builds them. Moving bodies will be read from the frame.
+    const Scene scene = sceneFromJson(manifest_.scene, directory_ + "/manifest.json");
+    nlohmann::ordered_json list = nlohmann::ordered_json::array();
+    for (const RigidBody& body : SceneSetup::buildBodies(scene)) {
+        const Quatd& q = body.orientation();
+        list.push_back({{"name", body.name()},
+                        {"motion", RigidBody::motionName(body.motion())},
+                        {"position", vector(body.position().cast<float>())},
+                        {"orientation", {q.w(), q.x(), q.y(), q.z()}},
+                        {"linear_velocity", vector(body.linearVelocity().cast<float>())},
+                        {"angular_velocity", vector(body.angularVelocity().cast<float>())}});
+    }
+    return list;
+}
+
 nlohmann::ordered_json InfoReport::toJson() const {
-    return {{"frame", frame_.state.frame},
-            {"time", frame_.state.time},
-            {"steps", frame_.state.steps},
-            {"fluid", fluidJson()},
-            // Rigid bodies are not part of the cached state yet: the container and obstacles are
-            // static and rebuilt from the scene.
-            {"bodies", nlohmann::ordered_json::array()},
-            {"timing", timingJson()},
+    return {{"frame", frame_.state.frame}, {"time", frame_.state.time},
+            {"steps", frame_.state.steps}, {"fluid", fluidJson()},
+            {"bodies", bodiesJson()},      {"timing", timingJson()},
             {"cache", cacheJson()}};
 }
 

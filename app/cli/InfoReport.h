@@ -22,6 +22,7 @@ public:
 
 private:
     nlohmann::ordered_json fluidJson() const;
+    nlohmann::ordered_json bodiesJson() const;
     nlohmann::ordered_json timingJson() const;
     nlohmann::ordered_json cacheJson() const;
 

@@ -12,11 +12,20 @@ class RigidBody {
 public:
     enum class Motion { Static };
 
-    RigidBody(std::string name, Motion motion, BoundaryParticles boundary)
-        : name_(std::move(name)), motion_(motion), boundary_(std::move(boundary)) {}
+    //! `boundary` is in the body's frame, whose origin sits at `position` in the world.
+    RigidBody(std::string name, Motion motion, BoundaryParticles boundary, const Vec3d& position)
+        : name_(std::move(name)), motion_(motion), boundary_(std::move(boundary)),
+          position_(position) {}
 
     const std::string& name() const { return name_; }
     Motion motion() const { return motion_; }
+    static const char* motionName(Motion motion) {
+        switch (motion) {
+        case Motion::Static:
+            return "static";
+        }
+        return "";
+    }
     bool isStatic() const { return motion_ == Motion::Static; }
     const BoundaryParticles& boundary() const { return boundary_; }
 
@@ -41,7 +50,7 @@ private:
     std::string name_;
     Motion motion_;
     BoundaryParticles boundary_;
-    Vec3d position_ = Vec3d::Zero();
+    Vec3d position_;
     Quatd orientation_ = Quatd::Identity();
     Vec3d linearVelocity_ = Vec3d::Zero();
     Vec3d angularVelocity_ = Vec3d::Zero();

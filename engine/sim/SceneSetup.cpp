@@ -29,26 +29,27 @@ bool insideAnyObstacle(const Scene& scene, const Vec3d& x, double margin) {
     return false;
 }
 
+//! A static box body whose frame sits at the box's centre, sampled on its surface.
+RigidBody boxBody(const std::string& name, const Aabb& box, double spacing,
+                  BoundarySampler::WaterSide side, bool openTop, const CubicSplineKernel& kernel) {
+    const Vec3d half = 0.5 * box.size();
+    BoundaryParticles surface = BoundarySampler::sampleBox({-half, half}, spacing, side, openTop);
+    BoundarySampler::computeVolumes(surface, kernel, spacing);
+    return RigidBody(name, RigidBody::Motion::Static, std::move(surface), box.center());
+}
+
 } // namespace
 
 std::vector<RigidBody> SceneSetup::buildBodies(const Scene& scene) {
     const double dx = scene.solver.particleSpacing;
     const CubicSplineKernel kernel(static_cast<float>(scene.supportRadius()));
     std::vector<RigidBody> bodies;
-
     const Aabb tank = Aabb{scene.container.min, scene.container.max}.expanded(0.5 * dx);
-    BoundaryParticles walls =
-        BoundarySampler::sampleBox(tank, dx, BoundarySampler::WaterSide::Inside, true);
-    BoundarySampler::computeVolumes(walls, kernel, dx);
-    bodies.emplace_back("Container", RigidBody::Motion::Static, std::move(walls));
-
-    for (const BoxObstacle& obstacle : scene.obstacles) {
-        BoundaryParticles surface =
-            BoundarySampler::sampleBox(obstacleBox(obstacle).expanded(0.5 * dx), dx,
-                                       BoundarySampler::WaterSide::Outside, false);
-        BoundarySampler::computeVolumes(surface, kernel, dx);
-        bodies.emplace_back(obstacle.name, RigidBody::Motion::Static, std::move(surface));
-    }
+    bodies.push_back(
+        boxBody("Container", tank, dx, BoundarySampler::WaterSide::Inside, true, kernel));
+    for (const BoxObstacle& obstacle : scene.obstacles)
+        bodies.push_back(boxBody(obstacle.name, obstacleBox(obstacle).expanded(0.5 * dx), dx,
+                                 BoundarySampler::WaterSide::Outside, false, kernel));
     return bodies;
 }
 

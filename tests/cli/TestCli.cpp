@@ -153,7 +153,13 @@ private Q_SLOTS:
         QCOMPARE(fluid.at("bounds").size(), std::size_t(2));
         QVERIFY(fluid.at("max_speed").get<double>() >= 0.0);
         QVERIFY(std::abs(fluid.at("mean_density").get<double>() - 1000.0) < 50.0);
-        QVERIFY(info.at("bodies").is_array());
+        const nlohmann::json& bodies = info.at("bodies");
+        QCOMPARE(bodies.size(), std::size_t(1)); // the tank, centred on its 0.3 m cube
+        QCOMPARE(bodies[0].at("name").get<std::string>(), std::string("Container"));
+        QCOMPARE(bodies[0].at("motion").get<std::string>(), std::string("static"));
+        for (int axis = 0; axis < 3; ++axis)
+            QVERIFY(std::abs(bodies[0].at("position")[axis].get<double>() - 0.15) < 1e-6);
+        QCOMPARE(bodies[0].at("orientation"), nlohmann::json({1.0, 0.0, 0.0, 0.0}));
         QVERIFY(info.at("timing").contains("wall_seconds"));
         QVERIFY(info.at("timing").contains("neighbours"));
         QCOMPARE(info.at("cache").at("frames"), nlohmann::json({1, 2, 3, 4}));
