@@ -2,9 +2,8 @@
 
 #include "sph/NeighborGrid.h"
 
-#include <tbb/parallel_for.h>
-
 #include <cmath>
+#include <tbb/parallel_for.h>
 
 namespace airtrap {
 
@@ -50,8 +49,8 @@ double BoundarySampler::flatLatticeKernelSum(const CubicSplineKernel& kernel, do
     return sum;
 }
 
-void BoundarySampler::computeVolumes(BoundaryParticles& particles,
-                                     const CubicSplineKernel& kernel, double spacing) {
+void BoundarySampler::computeVolumes(BoundaryParticles& particles, const CubicSplineKernel& kernel,
+                                     double spacing) {
     if (particles.size() == 0)
         return;
     Aabb bounds{particles.positions[0].cast<double>(), particles.positions[0].cast<double>()};
@@ -72,13 +71,14 @@ void BoundarySampler::computeVolumes(BoundaryParticles& particles,
     tbb::parallel_for(std::size_t(0), particles.size(), [&](std::size_t b) {
         const Vec3f& x = particles.positions[b];
         float sum = 0.0f;
-        grid.forEachNeighborRange(x, [&](std::uint32_t begin, std::uint32_t end) {
-            for (std::uint32_t s = begin; s < end; ++s) {
-                const float r2 = (x - sorted[s]).squaredNorm();
-                if (r2 < radius2)
-                    sum += kernel.value(std::sqrt(r2));
-            }
-        });
+        grid.forEachNeighborRange(x, kernel.supportRadius(),
+                                  [&](std::uint32_t begin, std::uint32_t end) {
+                                      for (std::uint32_t s = begin; s < end; ++s) {
+                                          const float r2 = (x - sorted[s]).squaredNorm();
+                                          if (r2 < radius2)
+                                              sum += kernel.value(std::sqrt(r2));
+                                      }
+                                  });
         particles.volumes[b] = flatVolume / sum; // sum ≥ W(0) > 0: b is its own neighbour
     });
 }

@@ -52,14 +52,15 @@ float InteractionPass::boundaryDensityRate(std::size_t i, const InteractionInput
     const Vec3f xi = in.positions[i];
     const Vec3f vi = in.fluid.velocities[i];
     float rate = 0.0f;
-    boundary.grid().forEachNeighborRange(xi, [&](std::uint32_t begin, std::uint32_t end) {
-        for (std::uint32_t b = begin; b < end; ++b) {
-            const Vec3f d = xi - bx[b];
-            const float r2 = d.squaredNorm();
-            if (r2 < radius2_)
-                rate += bpsi[b] * (vi - bv[b]).dot(kernel_.gradientFromSquared(d, r2));
-        }
-    });
+    boundary.grid().forEachNeighborRange(
+        xi, kernel_.supportRadius(), [&](std::uint32_t begin, std::uint32_t end) {
+            for (std::uint32_t b = begin; b < end; ++b) {
+                const Vec3f d = xi - bx[b];
+                const float r2 = d.squaredNorm();
+                if (r2 < radius2_)
+                    rate += bpsi[b] * (vi - bv[b]).dot(kernel_.gradientFromSquared(d, r2));
+            }
+        });
     return rate;
 }
 
@@ -134,29 +135,30 @@ Vec3f InteractionPass::boundaryForce(std::size_t i, const InteractionInputs& in,
     const float pressurei = pressureTerm * rhoi * rhoi;
     contact.distance2 = constants_.contactRadius * constants_.contactRadius;
     Vec3f force = Vec3f::Zero();
-    boundary.grid().forEachNeighborRange(xi, [&](std::uint32_t begin, std::uint32_t end) {
-        for (std::uint32_t b = begin; b < end; ++b) {
-            const Vec3f d = xi - bx[b];
-            const float r2 = d.squaredNorm();
-            if (r2 >= radius2_)
-                continue;
-            const Vec3f grad = kernel_.gradientFromSquared(d, r2);
-            const float approach = (vi - bv[b]).dot(d);
-            float viscosity = 0.0f;
-            if (approach < 0.0f)
-                viscosity = -constants_.wallViscosity * approach / ((r2 + eta2_) * rhoi);
-            // The wall's pressure is the particle's, extrapolated hydrostatically to the wall
-            // particle (Adami et al. 2012), so that a floor carries the weight of the layer above
-            // it instead of half of it.
-            const float wallPressure =
-                std::max(0.0f, pressurei + rhoi * constants_.gravity.dot(bx[b] - xi));
-            force -= bpsi[b] * (pressureTerm + wallPressure / (rhoi * rhoi) + viscosity) * grad;
-            if (r2 < contact.distance2) {
-                contact.distance2 = r2;
-                contact.boundaryParticle = b;
+    boundary.grid().forEachNeighborRange(
+        xi, kernel_.supportRadius(), [&](std::uint32_t begin, std::uint32_t end) {
+            for (std::uint32_t b = begin; b < end; ++b) {
+                const Vec3f d = xi - bx[b];
+                const float r2 = d.squaredNorm();
+                if (r2 >= radius2_)
+                    continue;
+                const Vec3f grad = kernel_.gradientFromSquared(d, r2);
+                const float approach = (vi - bv[b]).dot(d);
+                float viscosity = 0.0f;
+                if (approach < 0.0f)
+                    viscosity = -constants_.wallViscosity * approach / ((r2 + eta2_) * rhoi);
+                // The wall's pressure is the particle's, extrapolated hydrostatically to the wall
+                // particle (Adami et al. 2012), so that a floor carries the weight of the layer
+                // above it instead of half of it.
+                const float wallPressure =
+                    std::max(0.0f, pressurei + rhoi * constants_.gravity.dot(bx[b] - xi));
+                force -= bpsi[b] * (pressureTerm + wallPressure / (rhoi * rhoi) + viscosity) * grad;
+                if (r2 < contact.distance2) {
+                    contact.distance2 = r2;
+                    contact.boundaryParticle = b;
+                }
             }
-        }
-    });
+        });
     return force;
 }
 

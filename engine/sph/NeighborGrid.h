@@ -3,8 +3,9 @@
 // layer on every side (so the 27-cell neighbourhood of any interior cell exists without bounds
 // checks). Particles are counting-sorted by cell with x varying fastest, so each of the nine
 // (y, z) rows of a neighbourhood is one contiguous range of the sorted arrays: neighbour loops
-// stream memory and need no stored neighbour lists. Rebuilt every step (Ihmsen et al. 2011 call
-// this "index sort"). The sort is stable, so the result depends only on the input order.
+// stream memory. Rebuilt every
+// step (Ihmsen et al. 2011 call this "index sort"). The sort is stable, so the result depends only
+// on the input order.
 #include "core/Math.h"
 
 #include <cstdint>
@@ -24,16 +25,25 @@ public:
     std::size_t sortedCount() const { return order_.size(); }
     std::size_t outsideCount() const { return outside_; }
 
-    //! Calls visit(begin, end) for the nine contiguous ranges of sorted indices that cover the
-    //! 27 cells around the cell containing `x` (which must lie inside the domain).
+    //! Calls visit(begin, end) for the contiguous ranges of sorted indices that cover the cells
+    //! within `radius` (≤ the cell size) of `x`: the nine (y, z) rows of three cells around the
+    //! cell holding `x` (which must lie inside the domain), less the corner rows whose (y, z)
+    //! distance from `x` is already beyond `radius` (about a fifth of them).
     template <class Visit>
-    void forEachNeighborRange(const Vec3f& x, Visit&& visit) const {
+    void forEachNeighborRange(const Vec3f& x, float radius, Visit&& visit) const {
         const Vec3i c = cellCoordinates(x);
-        for (int dz = -1; dz <= 1; ++dz)
+        const Vec3f local = x - origin_ - c.cast<float>() * cellSize_; // position in its cell
+        const float radius2 = radius * radius;
+        for (int dz = -1; dz <= 1; ++dz) {
+            const float gapZ = rowGap(local.z(), dz);
             for (int dy = -1; dy <= 1; ++dy) {
+                const float gapY = rowGap(local.y(), dy);
+                if (gapY * gapY + gapZ * gapZ >= radius2)
+                    continue;
                 const int rowStart = linearIndex(c.x() - 1, c.y() + dy, c.z() + dz);
                 visit(cellStart_[rowStart], cellStart_[rowStart + 3]);
             }
+        }
     }
 
     Vec3i cellCoordinates(const Vec3f& x) const {
@@ -55,6 +65,11 @@ public:
     std::size_t allocatedBytes() const;
 
 private:
+    //! Distance along one axis from a point at `local` in its cell to the neighbouring slab of
+    //! cells at offset `d` (−1, 0, +1).
+    float rowGap(float local, int d) const {
+        return d < 0 ? local : (d > 0 ? cellSize_ - local : 0.0f);
+    }
     int clampAxis(float g, int axis) const {
         const int i = static_cast<int>(g);
         return i < 1 ? 1 : (i > dims_[axis] - 2 ? dims_[axis] - 2 : i);

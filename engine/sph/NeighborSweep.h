@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -51,7 +52,7 @@ void sweepNeighbors(const NeighborGrid& grid, const PositionArrays& positions, s
     // The distances of a whole row first, in a loop the compiler vectorises; then the cheap
     // compaction of those inside the support.
     std::array<float, kBatch> rowDistance2;
-    grid.forEachNeighborRange(xi, [&](std::uint32_t begin, std::uint32_t end) {
+    grid.forEachNeighborRange(xi, std::sqrt(radius2), [&](std::uint32_t begin, std::uint32_t end) {
         while (begin < end) {
             const std::uint32_t chunk = std::min<std::uint32_t>(end - begin, kBatch);
             if (count + chunk > kBatch)

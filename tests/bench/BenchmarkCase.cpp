@@ -19,11 +19,12 @@ double meanNeighbors(const WcsphSolver& solver, const ParticleSet& fluid) {
     const std::size_t stride = std::max<std::size_t>(1, fluid.size() / 2000);
     std::size_t pairs = 0, sampled = 0;
     for (std::size_t i = 0; i < fluid.size(); i += stride, ++sampled)
-        solver.grid().forEachNeighborRange(fluid.positions[i], [&](auto begin, auto end) {
-            for (auto j = begin; j < end; ++j)
-                pairs +=
-                    j != i && (fluid.positions[i] - fluid.positions[j]).squaredNorm() < radius2;
-        });
+        solver.grid().forEachNeighborRange(
+            fluid.positions[i], solver.kernel().supportRadius(), [&](auto begin, auto end) {
+                for (auto j = begin; j < end; ++j)
+                    pairs +=
+                        j != i && (fluid.positions[i] - fluid.positions[j]).squaredNorm() < radius2;
+            });
     return sampled ? double(pairs) / double(sampled) : 0.0;
 }
 

@@ -1,6 +1,8 @@
-// The neighbour grid finds exactly the pairs a brute-force search finds, sorts stably, drops
+// The neighbour grid finds exactly the pairs a brute-force search finds (also through the
+// batched sweep the SPH passes use, which skips rows out of reach), sorts stably by cell, drops
 // points outside the domain, and reports occupancy.
 #include "sph/NeighborGrid.h"
+#include "sph/NeighborSweep.h"
 
 #include <QtTest>
 #include <algorithm>
@@ -49,7 +51,7 @@ private Q_SLOTS:
         std::set<std::pair<std::uint32_t, std::uint32_t>> fromGrid, bruteForce;
         for (std::uint32_t s = 0; s < order.size(); ++s) {
             const Vec3f& x = points[order[s]];
-            grid.forEachNeighborRange(x, [&](std::uint32_t begin, std::uint32_t end) {
+            grid.forEachNeighborRange(x, radius, [&](std::uint32_t begin, std::uint32_t end) {
                 for (std::uint32_t t = begin; t < end; ++t)
                     if (t != s && (x - points[order[t]]).squaredNorm() < r2)
                         fromGrid.insert({order[s], order[t]});
@@ -62,6 +64,34 @@ private Q_SLOTS:
         QVERIFY(!bruteForce.empty());
         QCOMPARE(fromGrid.size(), bruteForce.size());
         QVERIFY(fromGrid == bruteForce);
+    }
+
+    void sweepEqualsBruteForce() {
+        const Aabb domain{Vec3d(0.0, -0.2, 0.0), Vec3d(0.8, 0.4, 0.5)};
+        const std::vector<Vec3f> points = randomPoints(3000, domain, 11);
+        const float radius = 0.09f;
+        NeighborGrid grid(domain, radius);
+        grid.build(points);
+        const auto& order = grid.order();
+        PositionArrays sorted;
+        sorted.resize(order.size());
+        for (std::size_t s = 0; s < order.size(); ++s) {
+            sorted.x[s] = points[order[s]].x();
+            sorted.y[s] = points[order[s]].y();
+            sorted.z[s] = points[order[s]].z();
+        }
+        std::size_t pairs = 0;
+        for (std::size_t s = 0; s < order.size(); ++s) {
+            std::set<std::uint32_t> found, expected;
+            sweepNeighbors(grid, sorted, s, radius * radius,
+                           [&](std::uint32_t j, const Vec3f&, float) { found.insert(order[j]); });
+            for (std::uint32_t b = 0; b < points.size(); ++b)
+                if (b != order[s] && (points[order[s]] - points[b]).squaredNorm() < radius * radius)
+                    expected.insert(b);
+            QVERIFY(found == expected);
+            pairs += found.size();
+        }
+        QVERIFY(pairs > 10 * order.size());
     }
 
     void sortIsStableAndGroupsCells() {
