@@ -1,7 +1,7 @@
-// The blow-up guard stops a bake with a message naming the frame and the likely cause, and the
-// Baker keeps every frame finished before it, recording the failure in the manifest. The guard is
-// driven here by a density bound far tighter than the flow can meet, which is exactly the
-// condition it watches for.
+// The blow-up guard stops a bake with a message naming the frame and the likely cause (density
+// error, water leaving the domain), and the Baker keeps every frame finished before it,
+// recording the failure in the manifest. The density guard is driven by a bound far tighter than
+// the flow can meet, which is exactly the condition it watches for.
 #include "cache/FrameCache.h"
 #include "core/Error.h"
 #include "sim/Baker.h"
@@ -73,6 +73,25 @@ private Q_SLOTS:
         QCOMPARE(cache.frames(), written);
         for (int frame : written)
             QCOMPARE(cache.readFrame(frame).state.frame, frame);
+    }
+
+    void waterLeavingTheDomainStopsTheBake() {
+        Scene scene = collapsingColumn();
+        scene.container.headroom = 0.05;
+        scene.fluidBlocks[0].initialVelocity = Vec3d(0.0, 4.0, 0.0); // thrown 0.8 m up
+        scene.solver.maxSpeed = 5.0;
+        Simulation simulation(scene);
+        Interrupter interrupter;
+        QString message;
+        try {
+            while (simulation.frame() < scene.frames.endFrame)
+                simulation.advanceFrame(interrupter);
+        } catch (const Error& error) {
+            QCOMPARE(error.kind(), ErrorKind::SimulationBlowUp);
+            message = QString::fromStdString(error.what());
+        }
+        QVERIFY2(message.contains("particles left the domain in one frame"), qPrintable(message));
+        QVERIFY2(message.contains("headroom"), qPrintable(message));
     }
 };
 
