@@ -34,9 +34,6 @@ public:
     //! times are met exactly without a sliver of a last step. Reorders the particles.
     StepReport step(SimulationState& state, double timeToFrameEnd);
 
-    //! Re-initialises every density by Shepard interpolation (also done every N steps).
-    void shepardFilter(ParticleSet& fluid);
-
     //! Tait equation of state, p = B((ρ/ρ₀)^γ − 1), clamped at 0 so the free surface does not
     //! pull particles into clumps.
     float pressure(float density) const;
@@ -54,6 +51,8 @@ public:
     std::size_t allocatedBytes() const;
 
 private:
+    //! Re-initialises every density by Shepard interpolation, on this step's sorted particles.
+    void shepardFilter(ParticleSet& fluid);
     void sortByCell(ParticleSet& fluid, StepReport& report);
     //! ρ ← max(ρ₀, ρ + Δt dρ/dt) and the pressure terms p/ρ²; returns max |ρ/ρ₀ − 1|.
     double advanceDensities(ParticleSet& fluid, double dt);
