@@ -3,6 +3,7 @@
 #include "ViewportWidget.h"
 
 #include <QApplication>
+#include <QIcon>
 #include <QSurfaceFormat>
 
 int main(int argc, char* argv[]) {
@@ -11,6 +12,7 @@ int main(int argc, char* argv[]) {
     QSurfaceFormat::setDefaultFormat(airtrap::ViewportWidget::surfaceFormat());
 
     QApplication app(argc, argv);
+    app.setWindowIcon(QIcon(":/icons/airtrap.png"));
     QApplication::setOrganizationName(QStringLiteral("Airtrap"));
     QApplication::setApplicationName(QStringLiteral("Airtrap"));
     QApplication::setApplicationVersion(QStringLiteral(AIRTRAP_VERSION));
