@@ -48,7 +48,7 @@ public:
 
 private:
     //! Throws Error(SimulationBlowUp) naming the frame and the likely cause.
-    void checkHealth(const StepReport& report, int frame, std::size_t lost,
+    void checkHealth(const StepReport& report, double timeToFrameEnd, int frame, std::size_t lost,
                      std::size_t particlesAtStart) const;
 
     Scene scene_;
