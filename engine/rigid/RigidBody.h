@@ -26,7 +26,6 @@ public:
         }
         return "";
     }
-    bool isStatic() const { return motion_ == Motion::Static; }
     const BoundaryParticles& boundary() const { return boundary_; }
 
     const Vec3d& position() const { return position_; }

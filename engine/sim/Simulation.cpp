@@ -56,17 +56,15 @@ std::string percent(double fraction) {
 
 } // namespace
 
-Simulation::Simulation(Scene scene) : scene_(std::move(scene)) {
-    solver_ = std::make_unique<WcsphSolver>(scene_.solver, scene_.domain(),
-                                            SceneSetup::buildBodies(scene_));
-    SceneSetup::fillFluid(scene_, *solver_, state_);
+Simulation::Simulation(Scene scene, SimulationState resumeFrom)
+    : scene_(std::move(scene)), state_(std::move(resumeFrom)),
+      solver_(std::make_unique<WcsphSolver>(scene_.solver, scene_.domain(),
+                                            SceneSetup::buildBodies(scene_))) {
     lastFrameStats_ = measure(state_.fluid);
 }
 
-Simulation::Simulation(Scene scene, SimulationState resumeFrom)
-    : scene_(std::move(scene)), state_(std::move(resumeFrom)) {
-    solver_ = std::make_unique<WcsphSolver>(scene_.solver, scene_.domain(),
-                                            SceneSetup::buildBodies(scene_));
+Simulation::Simulation(Scene scene) : Simulation(std::move(scene), SimulationState{}) {
+    SceneSetup::fillFluid(scene_, *solver_, state_);
     lastFrameStats_ = measure(state_.fluid);
 }
 

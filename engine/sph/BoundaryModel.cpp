@@ -10,9 +10,7 @@ void BoundaryModel::rebuild(const std::vector<RigidBody>& bodies) {
     std::vector<Vec3f> worldNormals;
     std::vector<Vec3f> worldVelocities;
     std::vector<float> psi;
-    std::vector<std::uint32_t> bodyIndex;
-    for (std::size_t bodyId = 0; bodyId < bodies.size(); ++bodyId) {
-        const RigidBody& body = bodies[bodyId];
+    for (const RigidBody& body : bodies) {
         const BoundaryParticles& local = body.boundary();
         for (std::size_t b = 0; b < local.size(); ++b) {
             const Vec3f x = body.toWorld(local.positions[b]);
@@ -20,7 +18,6 @@ void BoundaryModel::rebuild(const std::vector<RigidBody>& bodies) {
             worldNormals.push_back(body.directionToWorld(local.normals[b]));
             worldVelocities.push_back(body.velocityAt(x));
             psi.push_back(restDensity_ * local.volumes[b]);
-            bodyIndex.push_back(static_cast<std::uint32_t>(bodyId));
         }
     }
     grid_.build(worldPositions);
@@ -30,21 +27,19 @@ void BoundaryModel::rebuild(const std::vector<RigidBody>& bodies) {
     normals_.resize(n);
     velocities_.resize(n);
     psi_.resize(n);
-    bodyIndex_.resize(n);
     for (std::size_t s = 0; s < n; ++s) {
         const std::uint32_t from = order[s];
         positions_[s] = worldPositions[from];
         normals_[s] = worldNormals[from];
         velocities_[s] = worldVelocities[from];
         psi_[s] = psi[from];
-        bodyIndex_[s] = bodyIndex[from];
     }
 }
 
 std::size_t BoundaryModel::allocatedBytes() const {
     return grid_.allocatedBytes() +
            (positions_.capacity() + normals_.capacity() + velocities_.capacity()) * sizeof(Vec3f) +
-           psi_.capacity() * sizeof(float) + bodyIndex_.capacity() * sizeof(std::uint32_t);
+           psi_.capacity() * sizeof(float);
 }
 
 } // namespace airtrap

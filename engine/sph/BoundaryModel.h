@@ -2,8 +2,7 @@
 // The boundary particles of every rigid body in world space, sorted on their own neighbour grid
 // (same cell layout as the water's). Each carries Ψ_b = ρ₀ V_b, the mass it stands in for in the
 // water's density rate and pressure force (Akinci et al. 2012), its normal for the contact
-// impulse (paper eq. 4), its velocity and its body's index, so the reaction force can be handed
-// back to that body.
+// impulse (paper eq. 4) and its velocity.
 #include "rigid/RigidBody.h"
 #include "sph/NeighborGrid.h"
 
@@ -25,7 +24,6 @@ public:
     const std::vector<Vec3f>& normals() const { return normals_; }
     const std::vector<Vec3f>& velocities() const { return velocities_; }
     const std::vector<float>& psi() const { return psi_; }
-    const std::vector<std::uint32_t>& bodyIndices() const { return bodyIndex_; }
     std::size_t allocatedBytes() const;
 
 private:
@@ -35,7 +33,6 @@ private:
     std::vector<Vec3f> normals_;
     std::vector<Vec3f> velocities_;
     std::vector<float> psi_;
-    std::vector<std::uint32_t> bodyIndex_;
 };
 
 } // namespace airtrap

@@ -79,8 +79,6 @@ StepReport WcsphSolver::step(SimulationState& state, double timeToFrameEnd) {
     {
         StepPhases::Scope scope(phases_, StepPhases::Neighbours);
         sortByCell(fluid, report);
-        report.maxSpeed =
-            parallelMax(fluid.size(), [&](std::size_t i) { return fluid.velocities[i].norm(); });
     }
     report.timeStep = chooseTimeStep(report.maxSpeed, state.lastMaxAcceleration, timeToFrameEnd);
     const InteractionInputs inputs{fluid, sortedPositions_, grid_, boundary_};
@@ -116,18 +114,18 @@ void WcsphSolver::sortByCell(ParticleSet& fluid, StepReport& report) {
     const std::size_t n = order.size();
     reorderScratch_.resize(n);
     sortedPositions_.resize(n);
-    tbb::parallel_for(Range(0, n, 4096), [&](const Range& r) {
-        for (std::size_t s = r.begin(); s != r.end(); ++s) {
-            const std::uint32_t from = order[s];
-            const Vec3f& x = fluid.positions[from];
-            reorderScratch_.positions[s] = x;
-            sortedPositions_.x[s] = x.x();
-            sortedPositions_.y[s] = x.y();
-            sortedPositions_.z[s] = x.z();
-            reorderScratch_.velocities[s] = fluid.velocities[from];
-            reorderScratch_.densities[s] = fluid.densities[from];
-            reorderScratch_.ids[s] = fluid.ids[from];
-        }
+    // The gather also finds the largest speed, which the time step needs, in the same sweep.
+    report.maxSpeed = parallelMax(n, [&](std::size_t s) {
+        const std::uint32_t from = order[s];
+        const Vec3f& x = fluid.positions[from];
+        reorderScratch_.positions[s] = x;
+        sortedPositions_.x[s] = x.x();
+        sortedPositions_.y[s] = x.y();
+        sortedPositions_.z[s] = x.z();
+        reorderScratch_.velocities[s] = fluid.velocities[from];
+        reorderScratch_.densities[s] = fluid.densities[from];
+        reorderScratch_.ids[s] = fluid.ids[from];
+        return reorderScratch_.velocities[s].norm();
     });
     std::swap(fluid, reorderScratch_);
 }

@@ -53,6 +53,8 @@ public:
 private:
     //! Re-initialises every density by Shepard interpolation, on this step's sorted particles.
     void shepardFilter(ParticleSet& fluid);
+    //! Sorts the particles by cell, dropping those outside the domain; reports how many left and
+    //! the largest speed (for Δt), found in the same sweep.
     void sortByCell(ParticleSet& fluid, StepReport& report);
     //! ρ ← max(ρ₀, ρ + Δt dρ/dt) and the pressure terms p/ρ²; returns max |ρ/ρ₀ − 1|.
     double advanceDensities(ParticleSet& fluid, double dt);
