@@ -1,6 +1,6 @@
 // airtrap: the editor.
-#include "MainWindow.h"
-#include "ViewportWidget.h"
+#include "window/MainWindow.h"
+#include "viewport/ViewportWidget.h"
 
 #include <QApplication>
 #include <QIcon>

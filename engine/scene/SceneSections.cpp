@@ -161,6 +161,8 @@ SchemaSection objectSection(std::string key, std::string label, std::string help
     section.parameters = std::move(parameters);
     section.elementCount = [](const Scene&) -> std::size_t { return 1; };
     section.resize = [](Scene&, std::size_t) {};
+    section.insertDefault = [](Scene&, std::size_t) {};
+    section.erase = [](Scene&, std::size_t) {};
     return section;
 }
 
@@ -173,6 +175,16 @@ SchemaSection arraySection(std::string key, std::string label, std::string eleme
     section.elementLabel = std::move(elementLabel);
     section.elementCount = [](const Scene& scene) { return (scene.*Member).size(); };
     section.resize = [](Scene& scene, std::size_t count) { (scene.*Member).resize(count); };
+    section.insertDefault = [](Scene& scene, std::size_t index) {
+        auto& elements = scene.*Member;
+        // An explicit value: `{}` would pick the initializer-list overload and insert nothing.
+        using Element = typename std::remove_reference_t<decltype(elements)>::value_type;
+        elements.insert(elements.begin() + static_cast<std::ptrdiff_t>(index), Element{});
+    };
+    section.erase = [](Scene& scene, std::size_t index) {
+        auto& elements = scene.*Member;
+        elements.erase(elements.begin() + static_cast<std::ptrdiff_t>(index));
+    };
     return section;
 }
 

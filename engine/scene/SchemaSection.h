@@ -23,6 +23,10 @@ struct SchemaSection {
     std::function<std::size_t(const Scene& scene)> elementCount;
     //! Resizes an array section, default-constructing new elements; no-op for other sections.
     std::function<void(Scene& scene, std::size_t count)> resize;
+    //! Inserts a default-constructed element before `index` (≤ elementCount); arrays only.
+    std::function<void(Scene& scene, std::size_t index)> insertDefault;
+    //! Removes the element at `index` (< elementCount); arrays only.
+    std::function<void(Scene& scene, std::size_t index)> erase;
 
     //! The parameter with this JSON key, or nullptr.
     const BoundParameter* find(std::string_view parameterKey) const {

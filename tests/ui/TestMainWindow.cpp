@@ -1,7 +1,7 @@
 // The editor's main window comes up with its menus and a working OpenGL 3.3 core viewport.
 // Runs under a real (virtual) X server: QOpenGLWidget crashes on the offscreen platform.
-#include "MainWindow.h"
-#include "ViewportWidget.h"
+#include "window/MainWindow.h"
+#include "viewport/ViewportWidget.h"
 
 #include <QAction>
 #include <QMenu>

@@ -1,4 +1,4 @@
-#include "ViewportWidget.h"
+#include "viewport/ViewportWidget.h"
 
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>

@@ -1,6 +1,6 @@
-#include "MainWindow.h"
+#include "window/MainWindow.h"
 
-#include "ViewportWidget.h"
+#include "viewport/ViewportWidget.h"
 
 #include <QAction>
 #include <QCloseEvent>
