@@ -1,10 +1,107 @@
-// airtrap: the editor.
-#include "window/MainWindow.h"
+// airtrap: the editor. `airtrap [scene.json]` opens the window; with --screenshot it renders one
+// frame to a PNG and exits (for the docs and for pixel tests).
 #include "viewport/ViewportWidget.h"
+#include "window/MainWindow.h"
+#include "window/ScreenshotJob.h"
 
 #include <QApplication>
+#include <QCommandLineParser>
 #include <QIcon>
+#include <QRegularExpression>
 #include <QSurfaceFormat>
+#include <cstdio>
+#include <cstdlib>
+
+namespace {
+
+struct EditorOptions {
+    QString scenePath;
+    airtrap::ScreenshotRequest screenshot;
+    bool takeScreenshot = false;
+};
+
+//! Bad command-line input: the reason on stderr and exit code 2, like airtrap-cli.
+[[noreturn]] void refuse(const QString& reason) {
+    std::fprintf(stderr, "airtrap: %s\n", qPrintable(reason));
+    std::exit(2);
+}
+
+QSize parseSize(const QString& text, bool& ok) {
+    const QRegularExpressionMatch match =
+        QRegularExpression(QStringLiteral("^(\\d{2,5})x(\\d{2,5})$")).match(text);
+    ok = match.hasMatch();
+    return ok ? QSize(match.captured(1).toInt(), match.captured(2).toInt()) : QSize();
+}
+
+//! Parses the command line; exits with a message on bad input (QCommandLineParser's way).
+EditorOptions parseOptions(const QApplication& app) {
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral("Airtrap editor: SPH water with trapped air"));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    parser.addPositionalArgument(QStringLiteral("scene"), QStringLiteral("Scene file to open."),
+                                 QStringLiteral("[scene.json]"));
+    const QCommandLineOption scene(QStringLiteral("scene"), QStringLiteral("Scene file to open."),
+                                   QStringLiteral("file"));
+    const QCommandLineOption cache(QStringLiteral("cache"),
+                                   QStringLiteral("Cache folder to show (default: next to the "
+                                                  "scene; alone: view the cache)."),
+                                   QStringLiteral("dir"));
+    const QCommandLineOption frame(QStringLiteral("frame"), QStringLiteral("Cached frame to show."),
+                                   QStringLiteral("n"));
+    const QCommandLineOption screenshot(QStringLiteral("screenshot"),
+                                        QStringLiteral("Render to this PNG and exit."),
+                                        QStringLiteral("out.png"));
+    const QCommandLineOption size(QStringLiteral("size"),
+                                  QStringLiteral("Screenshot size (default 1280x720)."),
+                                  QStringLiteral("WxH"));
+    const QCommandLineOption window(QStringLiteral("window"),
+                                    QStringLiteral("Screenshot the whole editor window, not "
+                                                   "just the viewport."));
+    parser.addOptions({scene, cache, frame, screenshot, size, window});
+    parser.process(app);
+
+    EditorOptions options;
+    options.scenePath =
+        parser.isSet(scene) ? parser.value(scene) : parser.positionalArguments().value(0);
+    options.takeScreenshot = parser.isSet(screenshot);
+    airtrap::ScreenshotRequest& request = options.screenshot;
+    request.scenePath = options.scenePath;
+    request.cacheDir = parser.value(cache);
+    request.outputPath = parser.value(screenshot);
+    request.wholeWindow = parser.isSet(window);
+    if (parser.isSet(frame)) {
+        bool ok = false;
+        request.frame = parser.value(frame).toInt(&ok);
+        if (!ok || request.frame < 1)
+            refuse(
+                QStringLiteral("--frame %1: expected a frame number ≥ 1").arg(parser.value(frame)));
+    }
+    if (parser.isSet(size)) {
+        bool ok = false;
+        request.size = parseSize(parser.value(size), ok);
+        if (!ok)
+            refuse(
+                QStringLiteral("--size %1: expected WxH, e.g. 1280x720").arg(parser.value(size)));
+    }
+    return options;
+}
+
+int takeScreenshot(airtrap::MainWindow& window, const airtrap::ScreenshotRequest& request) {
+    airtrap::ScreenshotJob job(window, request);
+    int exitCode = 0;
+    QObject::connect(&job, &airtrap::ScreenshotJob::done, [&](const QString& error) {
+        if (!error.isEmpty()) {
+            std::fprintf(stderr, "airtrap: screenshot failed: %s\n", qPrintable(error));
+            exitCode = 1;
+        }
+        QApplication::exit(exitCode);
+    });
+    job.start();
+    return QApplication::exec() == 0 ? exitCode : 1;
+}
+
+} // namespace
 
 int main(int argc, char* argv[]) {
     // Before QApplication: the default format decides how Qt sets up its shared OpenGL contexts,
@@ -16,8 +113,15 @@ int main(int argc, char* argv[]) {
     QApplication::setOrganizationName(QStringLiteral("Airtrap"));
     QApplication::setApplicationName(QStringLiteral("Airtrap"));
     QApplication::setApplicationVersion(QStringLiteral(AIRTRAP_VERSION));
+    const EditorOptions options = parseOptions(app);
 
     airtrap::MainWindow window;
+    if (options.takeScreenshot)
+        return takeScreenshot(window, options.screenshot);
     window.show();
-    return app.exec();
+    if (!options.scenePath.isEmpty())
+        window.openScene(options.scenePath);
+    else if (!options.screenshot.cacheDir.isEmpty())
+        window.openCacheFolder(options.screenshot.cacheDir);
+    return QApplication::exec();
 }

@@ -270,6 +270,14 @@ void FrameCache::setStatus(const std::string& status) {
     updateManifest([&](CacheManifest& m) { m.status = status; });
 }
 
+void FrameCache::replaceScene(const nlohmann::json& sceneJson, const std::string& parameterHash) {
+    const std::lock_guard lock(mutex_);
+    updateManifest([&](CacheManifest& m) {
+        m.scene = sceneJson;
+        m.parameterHash = parameterHash;
+    });
+}
+
 int FrameCache::lastGoodFrame(std::vector<std::string>* problems) const {
     const std::vector<int> listed = frames();
     for (auto it = listed.rbegin(); it != listed.rend(); ++it) {

@@ -70,6 +70,10 @@ public:
     //! Sets "baking", "complete", "stopped" or "failed: <reason>" and writes the manifest.
     void setStatus(const std::string& status);
 
+    //! Records that the frames from now on are baked from another scene (an edit in the middle of
+    //! a bake, continued from the last kept frame).
+    void replaceScene(const nlohmann::json& sceneJson, const std::string& parameterHash);
+
     //! The newest listed frame that fully verifies (0 if none). Each damaged frame met on the
     //! way down is appended to `problems` as "<path>: <reason>". Io errors propagate: an
     //! unreadable file is not evidence of a bad frame.

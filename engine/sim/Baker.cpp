@@ -62,12 +62,32 @@ FrameCache Baker::openCache() const {
                            ? FrameCache::open(options_.cacheDir)
                            : FrameCache::create(options_.cacheDir, sceneToJson(scene_), hash,
                                                 scene_.frames.fps, options_.overwrite);
+    if (cache.manifest().parameterHash != hash && continuing && options_.adoptEditedScene)
+        adoptEditedScene(cache);
     if (cache.manifest().parameterHash != hash)
         throw Error(ErrorKind::InvalidInput,
                     options_.cacheDir + " was baked from a different scene (parameter hash " +
                         cache.manifest().parameterHash + ", this scene " + hash +
                         "); bake into another folder or start again with --overwrite");
     return cache;
+}
+
+void Baker::adoptEditedScene(FrameCache& cache) const {
+    // Particle mass and the kernel follow from these; cached particles made with other values
+    // would be out of balance with the new ones from the first step.
+    static const char* const kFixedForParticles[] = {"particle_spacing", "support_factor",
+                                                      "rest_density"};
+    const nlohmann::json& cachedSolver = cache.manifest().scene["solver"];
+    const nlohmann::json solver = sceneToJson(scene_)["solver"];
+    for (const char* key : kFixedForParticles)
+        if (cachedSolver.value(key, nlohmann::json()) != solver[key])
+            throw Error(ErrorKind::InvalidInput,
+                        options_.cacheDir + ": solver." + key + " changed from " +
+                            cachedSolver.value(key, nlohmann::json()).dump() + " to " +
+                            solver[key].dump() +
+                            "; the cached particles were made with the old value, so the bake "
+                            "must start again from frame 1");
+    cache.replaceScene(sceneToJson(scene_), parameterHash(scene_));
 }
 
 std::unique_ptr<Simulation> Baker::startingPoint(FrameCache& cache) {

@@ -28,6 +28,10 @@ struct BakeOptions {
     int firstFrame = 0;
     //! Last frame to compute (0 = the scene's end frame).
     int lastFrame = 0;
+    //! When continuing, accept a cache baked from an edited version of the scene: the kept frames
+    //! stay and the bake goes on with the new settings (the editor's "change from here"). Settings
+    //! that fix the particles themselves (spacing, support, rest density) must not differ.
+    bool adoptEditedScene = false;
 };
 
 //! Reported after every step and every frame.
@@ -68,6 +72,8 @@ private:
     void report(const std::string& message) const;
     //! Creates the cache, or opens it to continue, and checks it belongs to this scene.
     FrameCache openCache() const;
+    //! Lets a continued bake go on under the edited scene, or explains why it cannot.
+    void adoptEditedScene(FrameCache& cache) const;
     //! The simulation at the frame to continue from; on a fresh bake, frame 1, written.
     std::unique_ptr<Simulation> startingPoint(FrameCache& cache);
     Outcome bakeFrames(Simulation& simulation, FrameCache& cache, Interrupter& interrupter,

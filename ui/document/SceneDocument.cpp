@@ -66,6 +66,10 @@ void SceneDocument::open(const QString& path) {
     replaceScene(readSceneFile(path.toStdString()), QFileInfo(path).absoluteFilePath());
 }
 
+void SceneDocument::adoptScene(Scene scene) {
+    replaceScene(std::move(scene), QString());
+}
+
 void SceneDocument::save(const QString& path) {
     const QString absolute = QFileInfo(path).absoluteFilePath();
     writeSceneFile(scene_, absolute.toStdString());
@@ -84,7 +88,6 @@ void SceneDocument::replaceScene(Scene scene, const QString& path) {
     undoStack_->clear();
     undoStack_->setClean();
     Q_EMIT reset();
-    Q_EMIT changed();
     filePath_ = path;
     Q_EMIT filePathChanged(filePath_);
     Q_EMIT modifiedChanged(false);

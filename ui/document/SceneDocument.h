@@ -42,6 +42,8 @@ public:
     //! Reads and checks the file (engine's readSceneFile). Throws airtrap::Error, whose message
     //! names the file, the JSON path, the value and the allowed range; the document is unchanged.
     void open(const QString& path);
+    //! Makes `scene` the document, with no file (e.g. the scene copy in a cache's manifest).
+    void adoptScene(Scene scene);
     //! Writes the scene atomically to `path` and makes it the document's file. Throws Error(Io).
     void save(const QString& path);
 
@@ -94,9 +96,11 @@ Q_SIGNALS:
     void elementInserted(const QString& section, int index);
     void elementAboutToBeRemoved(const QString& section, int index);
     void elementRemoved(const QString& section, int index);
+    //! Before and after the whole scene is replaced (new, open, adopt); no changed() follows.
     void aboutToReset();
     void reset();
-    //! After any change of the scene's content (edit, undo, redo, insert, remove, reset).
+    //! After an edit of the scene's content: a parameter, an insert or a removal, or their undo
+    //! and redo.
     void changed();
     void filePathChanged(const QString& path);
     void modifiedChanged(bool modified);

@@ -1,14 +1,39 @@
 #include "viewport/ViewportWidget.h"
 
+#include "viewport/RenderContext.h"
+
+#include <QKeyEvent>
+#include <QMouseEvent>
 #include <QOpenGLContext>
-#include <QOpenGLFunctions>
+#include <QOpenGLExtraFunctions>
+#include <QPainter>
+#include <QWheelEvent>
+#include <algorithm>
+#include <cmath>
 
 namespace airtrap {
+
+namespace {
+
+constexpr float kOrbitDegreesPerPixel = 0.4f;
+constexpr float kZoomPerWheelStep = 0.85f; // distance factor of one notch towards the scene
+constexpr float kAxesShareOfDomain = 0.2f;
+constexpr float kMinAxesLength = 0.2f; // m
+
+} // namespace
 
 ViewportWidget::ViewportWidget(QWidget* parent) : QOpenGLWidget(parent) {
     // Set per widget as well as by default: tests and embedders may not go through main().
     setFormat(surfaceFormat());
     setMinimumSize(320, 240);
+    setFocusPolicy(Qt::StrongFocus); // for F
+}
+
+ViewportWidget::~ViewportWidget() {
+    // The base class destroys the context after this body: free the GL objects while it lives,
+    // and do not let its last signal reach the members that are gone by then.
+    disconnect(contextConnection_);
+    releaseGl();
 }
 
 QSurfaceFormat ViewportWidget::surfaceFormat() {
@@ -21,13 +46,235 @@ QSurfaceFormat ViewportWidget::surfaceFormat() {
     return format;
 }
 
+// --- Data ----------------------------------------------------------------------------------------
+
+void ViewportWidget::setScene(const Scene& scene) {
+    const bool first = !hasScene_;
+    hasScene_ = true;
+    gizmos_ = SceneGizmos(scene);
+    domain_ = scene.domain();
+    sceneSpacing_ = float(scene.solver.particleSpacing);
+    sceneDesignSpeed_ = float(scene.solver.maxSpeed);
+    grid_.fitAround(Aabb{scene.container.min, scene.container.max});
+    const float largestSide = float(domain_.size().maxCoeff());
+    axes_.setLength(std::max(kMinAxesLength, kAxesShareOfDomain * largestSide));
+    boxes_.setGizmos(gizmos_);
+    updateParticleLook();
+    if (first) {
+        frameAll();
+    }
+    update();
+}
+
+void ViewportWidget::setSelection(const SceneItem& item) {
+    selection_ = item;
+    boxes_.setSelection(item);
+    update();
+}
+
+void ViewportWidget::setFrame(std::shared_ptr<const FrameData> frame) {
+    frame_ = std::move(frame);
+    particles_.setFrame(frame_);
+    boxes_.setFluidBlocksVisible(!frame_);
+    update();
+}
+
+void ViewportWidget::frameAll() {
+    camera_.fit(domain_, aspectRatio());
+    refitOnResize_ = true;
+    update();
+}
+
+void ViewportWidget::setShowGrid(bool show) {
+    showGrid_ = show;
+    update();
+}
+
+void ViewportWidget::setShowAxes(bool show) {
+    showAxes_ = show;
+    update();
+}
+
+void ViewportWidget::setShowGizmos(bool show) {
+    showGizmos_ = show;
+    update();
+}
+
+void ViewportWidget::setParticleRadius(float metres) {
+    particleRadiusOverride_ = metres > 0.0f ? std::optional<float>(metres) : std::nullopt;
+    updateParticleLook();
+    update();
+}
+
+void ViewportWidget::setSpeedScale(float metresPerSecond) {
+    speedScaleOverride_ = std::max(metresPerSecond, 0.0f);
+    updateParticleLook();
+    update();
+}
+
+float ViewportWidget::particleRadius() const {
+    return particleRadiusOverride_.value_or(0.5f * sceneSpacing_);
+}
+
+void ViewportWidget::updateParticleLook() {
+    particles_.setRadius(particleRadius());
+    particles_.setSpeedScale(speedScaleOverride_.value_or(sceneDesignSpeed_));
+}
+
+SceneItem ViewportWidget::itemAt(const QPointF& position) const {
+    if (!hasScene_ || !showGizmos_) {
+        return SceneItem::none();
+    }
+    SceneGizmos::PickOptions options;
+    options.fluidBlocks = !isPlayback();
+    options.metresPerPixelPerDepth = camera_.metresPerPixel(1.0f, size());
+    return gizmos_.pick(camera_.ray(position, size()), options);
+}
+
+float ViewportWidget::aspectRatio() const {
+    return height() > 0 ? float(width()) / float(height()) : 1.0f;
+}
+
+// --- OpenGL --------------------------------------------------------------------------------------
+
+std::array<Drawable*, 4> ViewportWidget::drawables() {
+    return {&particles_, &grid_, &axes_, &boxes_};
+}
+
+void ViewportWidget::initializeGL() {
+    // A widget moved to another window gets a new context: free the old one's objects first.
+    disconnect(contextConnection_);
+    contextConnection_ = connect(context(), &QOpenGLContext::aboutToBeDestroyed, this,
+                                 &ViewportWidget::releaseGl, Qt::DirectConnection);
+    for (Drawable* drawable : drawables()) {
+        drawable->initialize();
+    }
+    glReady_ = true;
+}
+
+void ViewportWidget::releaseGl() {
+    if (!glReady_) {
+        return;
+    }
+    makeCurrent();
+    for (Drawable* drawable : drawables()) {
+        drawable->release();
+    }
+    doneCurrent();
+    glReady_ = false;
+}
+
+void ViewportWidget::resizeGL(int, int) {
+    if (refitOnResize_ && hasScene_) {
+        camera_.fit(domain_, aspectRatio());
+    }
+}
+
 void ViewportWidget::paintGL() {
-    QOpenGLFunctions* gl = context()->functions();
+    QOpenGLExtraFunctions* gl = context()->extraFunctions();
     // Set on every frame, not once in initializeGL: the context is shared with Qt's compositor,
     // which may leave its own clear colour behind.
     const QColor background = clearColor();
     gl->glClearColor(background.redF(), background.greenF(), background.blueF(), 1.0f);
     gl->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if (!hasScene_ && !isPlayback()) {
+        return;
+    }
+    drawScene();
+    if (isPlayback()) {
+        paintLegend();
+    }
+}
+
+void ViewportWidget::drawScene() {
+    const float ratio = float(devicePixelRatioF());
+    const QSize pixels(int(std::lround(width() * ratio)), int(std::lround(height() * ratio)));
+    const RenderContext context{*QOpenGLContext::currentContext()->extraFunctions(),
+                                camera_.viewMatrix(),
+                                camera_.projectionMatrix(aspectRatio()),
+                                camera_.projectionMatrix(aspectRatio()) * camera_.viewMatrix(),
+                                pixels,
+                                ratio};
+    context.gl.glEnable(GL_DEPTH_TEST);
+    context.gl.glDepthFunc(GL_LEQUAL); // lines on box faces and the floor win ties
+    particles_.draw(context);
+    if (hasScene_ && showGrid_) {
+        grid_.draw(context);
+    }
+    if (hasScene_ && showAxes_) {
+        axes_.draw(context);
+    }
+    if (hasScene_ && showGizmos_) {
+        boxes_.draw(context);
+    }
+    context.gl.glDisable(GL_DEPTH_TEST);
+}
+
+void ViewportWidget::paintLegend() {
+    // QPainter draws with the same context: it sets up the state it needs itself.
+    QPainter painter(this);
+    legend_.paint(painter, rect(), particles_.effectiveSpeedScale());
+}
+
+// --- Navigation and picking ----------------------------------------------------------------------
+
+void ViewportWidget::cameraMovedByUser() {
+    refitOnResize_ = false;
+    update();
+}
+
+void ViewportWidget::mousePressEvent(QMouseEvent* event) {
+    drag_.press(event->position(), event->button(), event->modifiers());
+    event->accept();
+}
+
+void ViewportWidget::mouseMoveEvent(QMouseEvent* event) {
+    const std::optional<QPointF> delta = drag_.move(event->position());
+    if (!delta) {
+        return;
+    }
+    if (drag_.mode() == DragTracker::Mode::Orbit) {
+        // Dragging right turns the scene right, i.e. the eye left.
+        camera_.orbit(-float(delta->x()) * kOrbitDegreesPerPixel,
+                      float(delta->y()) * kOrbitDegreesPerPixel);
+        cameraMovedByUser();
+    } else if (drag_.mode() == DragTracker::Mode::Pan) {
+        camera_.pan(*delta, size());
+        cameraMovedByUser();
+    }
+}
+
+void ViewportWidget::mouseReleaseEvent(QMouseEvent* event) {
+    if (drag_.release(event->button())) {
+        Q_EMIT itemPicked(itemAt(event->position()));
+    }
+}
+
+void ViewportWidget::mouseDoubleClickEvent(QMouseEvent* event) {
+    // Replaces the second press; the first click of the pair has already picked.
+    drag_.press(event->position(), event->button(), event->modifiers());
+    drag_.cancel();
+    if (event->button() == Qt::LeftButton && hasScene_ && itemAt(event->position()).isNone()) {
+        frameAll();
+    }
+}
+
+void ViewportWidget::wheelEvent(QWheelEvent* event) {
+    const float steps = float(event->angleDelta().y()) / 120.0f;
+    if (steps == 0.0f) {
+        return;
+    }
+    camera_.zoomToward(event->position(), size(), std::pow(kZoomPerWheelStep, steps));
+    cameraMovedByUser();
+    event->accept();
+}
+
+void ViewportWidget::keyPressEvent(QKeyEvent* event) {
+    if (event->key() == Qt::Key_F && event->modifiers() == Qt::NoModifier) {
+        frameAll();
+        return;
+    }
+    QOpenGLWidget::keyPressEvent(event);
 }
 
 } // namespace airtrap

@@ -1,9 +1,27 @@
 #pragma once
-// The editor's 3D view. For now it only proves that an OpenGL 3.3 core context comes up and clears;
-// drawing the scene and the baked frames is a later step.
+// The editor's 3D view: the scene's gizmos over a ground grid in edit mode, the water of a cached
+// frame in playback. Navigation is a turntable camera (left-drag orbit, middle- or shift-drag
+// pan, wheel zoom towards the cursor, F or a double-click on empty space frames everything); a
+// click without drag picks the gizmo under the cursor and reports it with itemPicked(). The
+// widget never selects by itself: whoever owns the selection answers with setSelection().
+#include "cache/FrameFile.h"
+#include "document/SceneItem.h"
+#include "scene/Scene.h"
+#include "viewport/AxesDrawable.h"
+#include "viewport/BoxGizmoDrawable.h"
+#include "viewport/DragTracker.h"
+#include "viewport/GridDrawable.h"
+#include "viewport/OrbitCamera.h"
+#include "viewport/ParticleDrawable.h"
+#include "viewport/SceneGizmos.h"
+#include "viewport/SpeedLegend.h"
+
 #include <QColor>
 #include <QOpenGLWidget>
 #include <QSurfaceFormat>
+#include <array>
+#include <memory>
+#include <optional>
 
 namespace airtrap {
 
@@ -12,6 +30,7 @@ class ViewportWidget : public QOpenGLWidget {
 
 public:
     explicit ViewportWidget(QWidget* parent = nullptr);
+    ~ViewportWidget() override;
 
     //! The surface every editor window asks for: OpenGL 3.3 core with a depth buffer. main() makes
     //! it the default so that all contexts (and Qt's own compositing) agree with the viewport's.
@@ -20,10 +39,97 @@ public:
     //! The background the viewport clears to; a flat dark grey that keeps bright water readable.
     static QColor clearColor() { return QColor(46, 46, 50); }
 
+    //! Room for a useful view.
     QSize sizeHint() const override { return QSize(960, 640); }
 
+    //! The camera, read-only: to project scene points to widget pixels (tests, overlays).
+    const OrbitCamera& camera() const { return camera_; }
+    //! True once setScene() has been called.
+    bool hasScene() const { return hasScene_; }
+    //! True while a frame is shown (setFrame() with a frame).
+    bool isPlayback() const { return frame_ != nullptr; }
+    //! The highlighted item.
+    const SceneItem& selection() const { return selection_; }
+    //! Radius the particles are drawn with, in metres.
+    float particleRadius() const;
+    //! The speed drawn white, m/s: the fixed scale, or the shown frame's fastest particle.
+    float speedScale() const { return particles_.effectiveSpeedScale(); }
+    //! The gizmo under `position` (widget pixels), as a click there would pick it.
+    SceneItem itemAt(const QPointF& position) const;
+
+public Q_SLOTS:
+    //! Copies what the view draws from `scene` and redraws. The first scene also frames the view.
+    void setScene(const airtrap::Scene& scene);
+    //! Highlights this item's gizmo (none: nothing).
+    void setSelection(const airtrap::SceneItem& item);
+    //! Playback: draws the frame's particles instead of the fluid blocks; null returns to editing.
+    void setFrame(std::shared_ptr<const airtrap::FrameData> frame);
+    //! Aims the camera at the simulation domain (container plus headroom) and fits it in view.
+    void frameAll();
+    //! Shows or hides the ground grid.
+    void setShowGrid(bool show);
+    //! Shows or hides the world axes at the origin.
+    void setShowAxes(bool show);
+    //! Shows or hides the gizmo boxes; hidden gizmos cannot be picked either.
+    void setShowGizmos(bool show);
+    //! Draws particles with this radius (metres) instead of the default, half the scene's spacing.
+    void setParticleRadius(float metres);
+    //! Fixes the speed drawn white (m/s); 0 follows each frame's fastest particle. By default it is
+    //! the scene's design speed u_max (solver max_speed), so colours compare between frames.
+    void setSpeedScale(float metresPerSecond);
+
+Q_SIGNALS:
+    //! A click without drag hit this gizmo (SceneItem::none() when it hit nothing).
+    void itemPicked(const airtrap::SceneItem& item);
+
 protected:
+    void initializeGL() override;
+    void resizeGL(int width, int height) override;
     void paintGL() override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    void mouseDoubleClickEvent(QMouseEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
+
+private:
+    //! Everything drawn in 3D, in drawing order: opaque water first, lines over it.
+    std::array<Drawable*, 4> drawables();
+    //! Frees every GL object while the context is current (before it goes away).
+    void releaseGl();
+    void drawScene();
+    void paintLegend();
+    float aspectRatio() const;
+    void updateParticleLook();
+    //! The user moved the camera: stop refitting it on resize.
+    void cameraMovedByUser();
+
+    OrbitCamera camera_;
+    DragTracker drag_;
+    GridDrawable grid_;
+    AxesDrawable axes_;
+    BoxGizmoDrawable boxes_;
+    ParticleDrawable particles_;
+    SpeedLegend legend_;
+
+    SceneGizmos gizmos_;
+    Aabb domain_;
+    float sceneSpacing_ = 0.02f;
+    float sceneDesignSpeed_ = 0.0f;
+    bool hasScene_ = false;
+    SceneItem selection_;
+    std::shared_ptr<const FrameData> frame_;
+
+    std::optional<float> particleRadiusOverride_;
+    std::optional<float> speedScaleOverride_;
+    bool showGrid_ = true;
+    bool showAxes_ = true;
+    bool showGizmos_ = true;
+    //! Until the user navigates, a resize refits the view (the first fit may predate the layout).
+    bool refitOnResize_ = false;
+    bool glReady_ = false;
+    QMetaObject::Connection contextConnection_;
 };
 
 } // namespace airtrap

@@ -1,95 +1,429 @@
 #include "window/MainWindow.h"
 
+#include "cache/FrameCache.h"
+#include "controller/SimulationController.h"
+#include "core/Error.h"
+#include "document/SceneDocument.h"
+#include "panels/ParameterPanel.h"
+#include "panels/SceneTreePanel.h"
+#include "scene/SceneJson.h"
+#include "scene/SceneSchema.h"
+#include "timeline/FrameLoader.h"
+#include "timeline/TimelineWidget.h"
 #include "viewport/ViewportWidget.h"
+#include "window/BakeSession.h"
+#include "window/CacheLocation.h"
+#include "window/EditorActions.h"
+#include "window/EditorSettings.h"
+#include "window/LogPanel.h"
+#include "window/RecentFiles.h"
+#include "window/StatusBarFields.h"
 
 #include <QAction>
 #include <QCloseEvent>
+#include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QKeySequence>
 #include <QMenuBar>
 #include <QMessageBox>
-#include <QSettings>
 #include <QStatusBar>
-#include <fstream>
-#include <nlohmann/json.hpp>
+#include <QToolBar>
+#include <QUndoStack>
+#include <QUndoView>
 
 namespace airtrap {
 
 namespace {
-
-// Named explicitly rather than taken from QApplication so that tests, which do not set the
-// application's names, read and write the same store as the editor.
-constexpr auto kSettingsOrganisation = "Airtrap";
-constexpr auto kSettingsApplication = "Airtrap";
 constexpr auto kGeometryKey = "mainWindow/geometry";
-
+constexpr auto kStateKey = "mainWindow/state";
+constexpr auto kSceneFilter = "Airtrap scenes (*.json);;All files (*)";
 } // namespace
 
-MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
-    setWindowTitle(QStringLiteral("Airtrap"));
+MainWindow::MainWindow(QWidget* parent)
+    : QMainWindow(parent), document_(std::make_unique<SceneDocument>()) {
+    setObjectName(QStringLiteral("mainWindow"));
+    setDockNestingEnabled(true);
+    createParts();
+    createDocks();
+    createMenus();
+    createToolbar();
+    connectDocument();
+    connectSelection();
+    connectPlayback();
+    connectActions();
+    restoreSettings();
+    onDocumentChanged();
+    updateTitle();
+    statusBar()->showMessage(tr("Ready"));
+}
+
+MainWindow::~MainWindow() {
+    controller_->stop();
+    controller_->waitForIdle(10000);
+}
+
+void MainWindow::createParts() {
+    actions_ = new EditorActions(this);
     viewport_ = new ViewportWidget(this);
     viewport_->setObjectName(QStringLiteral("viewport"));
     setCentralWidget(viewport_);
-    createMenus();
-    statusBar()->showMessage(tr("Ready"));
-    restoreSettings();
+    sceneTree_ = new SceneTreePanel(*document_, this);
+    parameterPanel_ = new ParameterPanel(*document_, this);
+    timeline_ = new TimelineWidget(this);
+    timeline_->setObjectName(QStringLiteral("timeline"));
+    log_ = new LogPanel(this);
+    controller_ = new SimulationController(this);
+    loader_ = new FrameLoader(this);
+    statusFields_ = new StatusBarFields(statusBar());
+    bakeSession_ = new BakeSession(*document_, *controller_, *timeline_, *loader_, *log_,
+                                   *statusFields_, *actions_, this);
+    bakeSession_->setCacheDirectoryProvider([this] { return cacheDirectory(); });
+}
+
+QDockWidget* MainWindow::addDock(QWidget* content, const QString& title, const char* objectName,
+                                 Qt::DockWidgetArea area) {
+    auto* dock = new QDockWidget(title, this);
+    // saveState() finds docks by object name.
+    dock->setObjectName(QLatin1String(objectName));
+    dock->setWidget(content);
+    addDockWidget(area, dock);
+    return dock;
+}
+
+void MainWindow::createDocks() {
+    addDock(sceneTree_, tr("Scene"), "sceneDock", Qt::LeftDockWidgetArea);
+    addDock(parameterPanel_, tr("Parameters"), "parametersDock", Qt::RightDockWidgetArea);
+    auto* history = new QUndoView(document_->undoStack(), this);
+    history->setObjectName(QStringLiteral("historyView"));
+    history->setEmptyLabel(tr("<opened>"));
+    QDockWidget* historyDock =
+        addDock(history, tr("History"), "historyDock", Qt::LeftDockWidgetArea);
+    tabifyDockWidget(findChild<QDockWidget*>(QStringLiteral("sceneDock")), historyDock);
+    findChild<QDockWidget*>(QStringLiteral("sceneDock"))->raise();
+    addDock(timeline_, tr("Timeline"), "timelineDock", Qt::BottomDockWidgetArea);
+    QDockWidget* logDock = addDock(log_, tr("Log"), "logDock", Qt::BottomDockWidgetArea);
+    splitDockWidget(findChild<QDockWidget*>(QStringLiteral("timelineDock")), logDock, Qt::Vertical);
 }
 
 void MainWindow::createMenus() {
     fileMenu_ = menuBar()->addMenu(tr("&File"));
     fileMenu_->setObjectName(QStringLiteral("fileMenu"));
-
-    openSceneAction_ = fileMenu_->addAction(tr("&Open Scene…"));
-    openSceneAction_->setObjectName(QStringLiteral("openSceneAction"));
-    openSceneAction_->setShortcut(QKeySequence::Open);
-    connect(openSceneAction_, &QAction::triggered, this, &MainWindow::chooseScene);
-
+    fileMenu_->addAction(actions_->newScene);
+    fileMenu_->addAction(actions_->openScene);
+    QMenu* recent = fileMenu_->addMenu(tr("Open &Recent"));
+    recent->setObjectName(QStringLiteral("recentMenu"));
+    recentFiles_ = new RecentFiles(recent, this);
+    fileMenu_->addAction(actions_->openCache);
     fileMenu_->addSeparator();
+    fileMenu_->addAction(actions_->saveScene);
+    fileMenu_->addAction(actions_->saveSceneAs);
+    fileMenu_->addSeparator();
+    fileMenu_->addAction(actions_->quit);
 
-    quitAction_ = fileMenu_->addAction(tr("&Quit"));
-    quitAction_->setObjectName(QStringLiteral("quitAction"));
-    // Spelled out: QKeySequence::Quit is empty on some desktops, Ctrl+Q is what users expect.
-    quitAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Q));
-    quitAction_->setMenuRole(QAction::QuitRole);
-    connect(quitAction_, &QAction::triggered, this, &MainWindow::close);
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    QAction* undo = document_->undoStack()->createUndoAction(this, tr("&Undo"));
+    undo->setShortcut(QKeySequence::Undo);
+    undo->setObjectName(QStringLiteral("undoAction"));
+    QAction* redo = document_->undoStack()->createRedoAction(this, tr("&Redo"));
+    redo->setShortcut(QKeySequence::Redo);
+    redo->setObjectName(QStringLiteral("redoAction"));
+    edit->addAction(undo);
+    edit->addAction(redo);
+    edit->addSeparator();
+    edit->addMenu(sceneTree_->addMenu());
+    edit->addAction(actions_->duplicate);
+    edit->addAction(actions_->rename);
+    edit->addAction(actions_->remove);
 
-    QMenu* helpMenu = menuBar()->addMenu(tr("&Help"));
-    helpMenu->setObjectName(QStringLiteral("helpMenu"));
-    QAction* aboutAction = helpMenu->addAction(tr("&About Airtrap"));
-    aboutAction->setMenuRole(QAction::AboutRole);
-    connect(aboutAction, &QAction::triggered, this, &MainWindow::showAbout);
+    QMenu* simulation = menuBar()->addMenu(tr("&Simulation"));
+    simulation->addActions({actions_->bake, actions_->pause, actions_->resume, actions_->stop});
+    simulation->addSeparator();
+    simulation->addAction(actions_->clearCache);
+
+    QMenu* playback = menuBar()->addMenu(tr("&Playback"));
+    playback->addActions({actions_->playPause, actions_->stepBackward, actions_->stepForward,
+                          actions_->firstFrame, actions_->lastFrame, actions_->loop});
+
+    viewMenu_ = menuBar()->addMenu(tr("&View"));
+    viewMenu_->addActions(
+        {actions_->frameAll, actions_->showGrid, actions_->showAxes, actions_->showGizmos});
+    viewMenu_->addSeparator();
+    for (QDockWidget* dock : findChildren<QDockWidget*>())
+        viewMenu_->addAction(dock->toggleViewAction());
+
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->setObjectName(QStringLiteral("helpMenu"));
+    help->addAction(actions_->about);
 }
 
-void MainWindow::chooseScene() {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open Scene"), QString(),
-                                                      tr("Airtrap scenes (*.json);;All files (*)"));
-    if (!path.isEmpty()) {
-        openScene(path);
-    }
+void MainWindow::createToolbar() {
+    QToolBar* bar = addToolBar(tr("Main"));
+    bar->setObjectName(QStringLiteral("mainToolbar"));
+    bar->addActions({actions_->newScene, actions_->openScene, actions_->saveScene});
+    bar->addSeparator();
+    bar->addActions({actions_->bake, actions_->pause, actions_->resume, actions_->stop});
+    bar->addSeparator();
+    bar->addAction(actions_->frameAll);
+}
+
+QAction* MainWindow::openSceneAction() const {
+    return actions_->openScene;
+}
+
+QAction* MainWindow::quitAction() const {
+    return actions_->quit;
+}
+
+// --- Wiring -------------------------------------------------------------------------------------
+
+void MainWindow::connectDocument() {
+    connect(document_.get(), &SceneDocument::changed, this, [this] {
+        onDocumentChanged();
+        bakeSession_->sceneEdited();
+    });
+    connect(document_.get(), &SceneDocument::reset, this, &MainWindow::onDocumentChanged);
+    connect(bakeSession_, &BakeSession::statusMessage, this,
+            [this](const QString& text) { statusBar()->showMessage(text, 5000); });
+    connect(bakeSession_, &BakeSession::cachedFramesChanged, this, [this] {
+        onTimelineFrameChanged(timeline_->currentFrame());
+        Q_EMIT cachedFramesChanged();
+    });
+    connect(document_.get(), &SceneDocument::modifiedChanged, this, &MainWindow::updateTitle);
+    connect(document_.get(), &SceneDocument::filePathChanged, this, &MainWindow::updateTitle);
+    connect(sceneTree_, &SceneTreePanel::editRefused, this, [this](const QString& reason) {
+        statusBar()->showMessage(reason, 8000);
+        log_->warning(reason);
+    });
+}
+
+void MainWindow::connectSelection() {
+    connect(sceneTree_, &SceneTreePanel::itemSelected, this, [this](const SceneItem& item) {
+        parameterPanel_->showItem(item);
+        viewport_->setSelection(item);
+    });
+    connect(viewport_, &ViewportWidget::itemPicked, this, [this](const SceneItem& item) {
+        sceneTree_->selectItem(item);
+        parameterPanel_->showItem(item);
+        viewport_->setSelection(item);
+    });
+}
+
+void MainWindow::connectPlayback() {
+    connect(timeline_, &TimelineWidget::currentFrameChanged, this,
+            &MainWindow::onTimelineFrameChanged);
+    connect(loader_, &FrameLoader::frameLoaded, this, &MainWindow::onFrameLoaded);
+    connect(loader_, &FrameLoader::loadFailed, this, [this](int, const QString& message) {
+        log_->error(message);
+        statusBar()->showMessage(message, 10000);
+    });
+}
+
+void MainWindow::connectActions() {
+    connect(actions_->newScene, &QAction::triggered, this, &MainWindow::newScene);
+    connect(actions_->openScene, &QAction::triggered, this, &MainWindow::chooseAndOpenScene);
+    connect(actions_->openCache, &QAction::triggered, this, &MainWindow::chooseAndOpenCache);
+    connect(actions_->saveScene, &QAction::triggered, this, &MainWindow::saveScene);
+    connect(actions_->saveSceneAs, &QAction::triggered, this, &MainWindow::chooseAndSaveAs);
+    connect(actions_->quit, &QAction::triggered, this, &MainWindow::close);
+    connect(recentFiles_, &RecentFiles::fileChosen, this, &MainWindow::openScene);
+    connect(actions_->duplicate, &QAction::triggered, sceneTree_,
+            &SceneTreePanel::duplicateSelected);
+    connect(actions_->remove, &QAction::triggered, sceneTree_, &SceneTreePanel::removeSelected);
+    connect(actions_->rename, &QAction::triggered, sceneTree_, &SceneTreePanel::renameSelected);
+    connect(actions_->frameAll, &QAction::triggered, viewport_, &ViewportWidget::frameAll);
+    connect(actions_->showGrid, &QAction::toggled, viewport_, &ViewportWidget::setShowGrid);
+    connect(actions_->showAxes, &QAction::toggled, viewport_, &ViewportWidget::setShowAxes);
+    connect(actions_->showGizmos, &QAction::toggled, viewport_, &ViewportWidget::setShowGizmos);
+    connect(actions_->playPause, &QAction::triggered, this,
+            [this] { timeline_->isPlaying() ? timeline_->pause() : timeline_->play(); });
+    connect(actions_->stepForward, &QAction::triggered, timeline_, &TimelineWidget::stepForward);
+    connect(actions_->stepBackward, &QAction::triggered, timeline_, &TimelineWidget::stepBackward);
+    connect(actions_->firstFrame, &QAction::triggered, timeline_, &TimelineWidget::goToFirst);
+    connect(actions_->lastFrame, &QAction::triggered, timeline_, &TimelineWidget::goToLast);
+    connect(actions_->loop, &QAction::toggled, timeline_, &TimelineWidget::setLoop);
+    timeline_->setLoop(actions_->loop->isChecked());
+    connect(actions_->about, &QAction::triggered, this, &MainWindow::showAbout);
+}
+
+// --- Document -----------------------------------------------------------------------------------
+
+void MainWindow::onDocumentChanged() {
+    viewport_->setScene(document_->scene());
+    timeline_->setFrameRange(1, document_->scene().frames.endFrame);
+    timeline_->setFps(document_->scene().frames.fps);
+}
+
+void MainWindow::setInteractive(bool interactive) {
+    interactive_ = interactive;
+    bakeSession_->setInteractive(interactive);
+}
+
+void MainWindow::updateTitle() {
+    setWindowFilePath(document_->filePath());
+    setWindowTitle(QStringLiteral("%1[*] — Airtrap").arg(document_->displayName()));
+    setWindowModified(document_->isModified());
+}
+
+QString MainWindow::cacheDirectory() const {
+    if (!openedCacheDir_.isEmpty())
+        return openedCacheDir_;
+    return CacheLocation::forScene(document_->filePath());
+}
+
+void MainWindow::selectSomethingToEdit() {
+    // The first object of the scene (usually its water) is what one edits first; an empty scene
+    // shows its own settings.
+    for (const SchemaSection& section : SceneSchema::sections())
+        if (section.isArray && section.elementCount(document_->scene()) > 0) {
+            sceneTree_->selectItem(SceneItem::elementItem(section.key, 0));
+            return;
+        }
+    sceneTree_->selectItem(SceneItem::sectionItem(""));
+}
+
+void MainWindow::pointLoaderAtCache() {
+    selectSomethingToEdit();
+    viewport_->setFrame(nullptr);
+    bakeSession_->cacheFolderChanged();
+    viewport_->frameAll();
+}
+
+bool MainWindow::maybeSave() {
+    if (!document_->isModified() || !interactive_)
+        return true;
+    const auto answer = QMessageBox::warning(
+        this, tr("Unsaved changes"),
+        tr("“%1” has unsaved changes. Save them?").arg(document_->displayName()),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    if (answer == QMessageBox::Save)
+        return saveScene();
+    return answer == QMessageBox::Discard;
+}
+
+void MainWindow::newScene() {
+    if (!maybeSave() || !bakeSession_->releaseCache())
+        return;
+    openedCacheDir_.clear();
+    document_->newScene();
+    pointLoaderAtCache();
+    statusBar()->showMessage(tr("New scene"), 4000);
 }
 
 bool MainWindow::openScene(const QString& path) {
-    // Plain JSON on purpose: the editor does not edit scenes yet, so naming the file is all it
-    // claims to do. Validation belongs to the engine's scene reader once the editor uses it.
-    std::ifstream in(QFileInfo(path).absoluteFilePath().toStdString(), std::ios::binary);
-    if (!in) {
-        statusBar()->showMessage(tr("Cannot open %1").arg(path));
+    if (!maybeSave() || !bakeSession_->releaseCache())
+        return false;
+    try {
+        document_->open(path);
+    } catch (const Error& error) {
+        showError(tr("Cannot open scene"), QString::fromUtf8(error.what()));
+        if (!QFileInfo::exists(path))
+            recentFiles_->remove(path);
         return false;
     }
-    const nlohmann::json json = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
-    if (json.is_discarded() || !json.is_object()) {
-        statusBar()->showMessage(tr("%1 is not a JSON scene").arg(path));
-        return false;
-    }
-    QString name = tr("(unnamed)");
-    if (const auto it = json.find("name"); it != json.end() && it->is_string()) {
-        name = QString::fromStdString(it->get<std::string>());
-    }
-    statusBar()->showMessage(
-        tr("Scene “%1” — %2 (viewing and editing come later)").arg(name, path));
+    openedCacheDir_.clear();
+    recentFiles_->add(path);
+    pointLoaderAtCache();
+    log_->info(tr("Opened %1").arg(document_->filePath()));
+    statusBar()->showMessage(tr("Opened %1").arg(document_->displayName()), 4000);
     return true;
 }
+
+bool MainWindow::openCacheFolder(const QString& dir) {
+    if (!maybeSave() || !bakeSession_->releaseCache())
+        return false;
+    try {
+        const FrameCache cache = FrameCache::open(dir.toStdString());
+        Scene scene = sceneFromJson(cache.manifest().scene, (dir + "/manifest.json").toStdString());
+        document_->adoptScene(std::move(scene));
+    } catch (const Error& error) {
+        showError(tr("Cannot open cache"), QString::fromUtf8(error.what()));
+        return false;
+    }
+    openedCacheDir_ = QFileInfo(dir).absoluteFilePath();
+    pointLoaderAtCache();
+    log_->info(tr("Viewing cache %1").arg(openedCacheDir_));
+    return true;
+}
+
+void MainWindow::useCacheFolder(const QString& dir) {
+    openedCacheDir_ = QFileInfo(dir).absoluteFilePath();
+    pointLoaderAtCache();
+}
+
+bool MainWindow::saveScene() {
+    if (document_->filePath().isEmpty())
+        return chooseAndSaveAs();
+    return saveSceneAs(document_->filePath());
+}
+
+bool MainWindow::saveSceneAs(const QString& path) {
+    try {
+        document_->save(path);
+    } catch (const Error& error) {
+        showError(tr("Cannot save scene"), QString::fromUtf8(error.what()));
+        return false;
+    }
+    recentFiles_->add(path);
+    statusBar()->showMessage(tr("Saved %1").arg(document_->filePath()), 4000);
+    return true;
+}
+
+void MainWindow::chooseAndOpenScene() {
+    const QString path =
+        QFileDialog::getOpenFileName(this, tr("Open Scene"), QString(), tr(kSceneFilter));
+    if (!path.isEmpty())
+        openScene(path);
+}
+
+void MainWindow::chooseAndOpenCache() {
+    const QString dir = QFileDialog::getExistingDirectory(this, tr("Open Cache Folder"));
+    if (!dir.isEmpty())
+        openCacheFolder(dir);
+}
+
+bool MainWindow::chooseAndSaveAs() {
+    QString path = QFileDialog::getSaveFileName(this, tr("Save Scene As"), document_->filePath(),
+                                                tr(kSceneFilter));
+    if (path.isEmpty())
+        return false;
+    if (QFileInfo(path).suffix().isEmpty())
+        path += QStringLiteral(".json");
+    return saveSceneAs(path);
+}
+
+void MainWindow::showError(const QString& title, const QString& message) {
+    log_->error(message);
+    statusBar()->showMessage(message.section(QLatin1Char('\n'), 0, 0), 10000);
+    if (interactive_)
+        QMessageBox::critical(this, title, message);
+}
+
+// --- Playback -----------------------------------------------------------------------------------
+
+void MainWindow::showFrame(int frame) {
+    timeline_->setCurrentFrame(frame);
+    onTimelineFrameChanged(timeline_->currentFrame());
+}
+
+void MainWindow::onTimelineFrameChanged(int frame) {
+    if (bakeSession_->isCached(frame)) {
+        loader_->request(frame);
+        return;
+    }
+    viewport_->setFrame(nullptr);
+    statusFields_->showFrameNumber(frame, document_->scene().frames.fps);
+}
+
+void MainWindow::onFrameLoaded(int frame, std::shared_ptr<const FrameData> data) {
+    // Scrubbing asks for many frames; only the one the timeline still points at is shown.
+    if (frame != timeline_->currentFrame())
+        return;
+    statusFields_->showFrame(frame, *data);
+    viewport_->setFrame(std::move(data));
+    Q_EMIT frameShown(frame);
+}
+
+// --- Window -------------------------------------------------------------------------------------
 
 void MainWindow::showAbout() {
     QMessageBox::about(this, tr("About Airtrap"),
@@ -100,21 +434,27 @@ void MainWindow::showAbout() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
+    if (!maybeSave() || !bakeSession_->releaseCache()) {
+        event->ignore();
+        return;
+    }
     saveSettings();
     QMainWindow::closeEvent(event);
 }
 
 void MainWindow::restoreSettings() {
-    const QSettings settings(kSettingsOrganisation, kSettingsApplication);
+    const QSettings& settings = EditorSettings::store();
     const QByteArray geometry = settings.value(kGeometryKey).toByteArray();
-    if (geometry.isEmpty() || !restoreGeometry(geometry)) {
-        resize(1280, 800);
-    }
+    if (geometry.isEmpty() || !restoreGeometry(geometry))
+        resize(1440, 900);
+    restoreState(settings.value(kStateKey).toByteArray());
 }
 
 void MainWindow::saveSettings() const {
-    QSettings settings(kSettingsOrganisation, kSettingsApplication);
+    QSettings& settings = EditorSettings::store();
     settings.setValue(kGeometryKey, saveGeometry());
+    settings.setValue(kStateKey, saveState());
+    settings.sync();
 }
 
 } // namespace airtrap

@@ -1,48 +1,136 @@
 #pragma once
-// The editor's main window. Today it holds the menus and an empty viewport; the scene tree,
-// parameter panels and timeline join it as the editor grows.
+// The editor's main window: the viewport in the centre; docks for the scene tree, the parameter
+// panel, the timeline, the undo history and the log; menus, a toolbar and a status bar. It owns
+// the document and wires the parts together — the parts do not know each other.
+#include "document/SceneItem.h"
+
 #include <QMainWindow>
 #include <QString>
+#include <memory>
 
-class QAction;
+class QCloseEvent;
+class QDockWidget;
 class QMenu;
+class QAction;
 
 namespace airtrap {
 
+class BakeSession;
+class EditorActions;
+class FrameLoader;
+class LogPanel;
+class ParameterPanel;
+class RecentFiles;
+class SceneDocument;
+class SceneTreePanel;
+class SimulationController;
+class StatusBarFields;
+class TimelineWidget;
 class ViewportWidget;
+struct FrameData;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
 
 public:
     explicit MainWindow(QWidget* parent = nullptr);
+    //! Stops a running bake (keeping its finished frames) before the window goes.
+    ~MainWindow() override;
 
+    SceneDocument& document() const { return *document_; }
     ViewportWidget* viewport() const { return viewport_; }
+    SceneTreePanel* sceneTree() const { return sceneTree_; }
+    ParameterPanel* parameterPanel() const { return parameterPanel_; }
+    TimelineWidget* timeline() const { return timeline_; }
+    SimulationController* controller() const { return controller_; }
+    FrameLoader* frameLoader() const { return loader_; }
+    LogPanel* log() const { return log_; }
+    StatusBarFields* statusFields() const { return statusFields_; }
+    const EditorActions& actions() const { return *actions_; }
     QMenu* fileMenu() const { return fileMenu_; }
-    QAction* openSceneAction() const { return openSceneAction_; }
-    QAction* quitAction() const { return quitAction_; }
+    QAction* openSceneAction() const;
+    QAction* quitAction() const;
+
+    //! Where the open scene bakes: "<scene folder>/<scene name>.cache" for a saved scene, a
+    //! folder in the user's cache location for an unsaved one, or the cache opened with
+    //! openCacheFolder().
+    QString cacheDirectory() const;
+
+    //! When false, questions (unsaved changes, discarding frames) take their default answer
+    //! without a dialog and errors go to the log only: for tests and the screenshot mode.
+    void setInteractive(bool interactive);
 
 public Q_SLOTS:
-    //! Reads the scene file at `path` just far enough to name it in the status bar. Returns false
-    //! (and says why in the status bar) when the file cannot be read or is not a JSON object.
+    //! Opens a scene (after offering to save unsaved changes) and its cache when one exists.
+    //! Returns false, with the reason in the log and the status bar, when the file is refused.
     bool openScene(const QString& path);
+    //! Views the cache in `dir` without its scene file: the scene copy in its manifest is shown
+    //! (and can be saved as a new scene file).
+    bool openCacheFolder(const QString& dir);
+    //! Shows and bakes the cache in `dir` for the open scene (instead of the folder next to its
+    //! file), e.g. a cache baked with airtrap-cli.
+    void useCacheFolder(const QString& dir);
+    bool saveScene();
+    bool saveSceneAs(const QString& path);
+    void newScene();
+    //! Moves the timeline to `frame`; frameShown() follows once it is in the viewport.
+    void showFrame(int frame);
+
+Q_SIGNALS:
+    //! The viewport now draws cached frame `frame`.
+    void frameShown(int frame);
+    //! The list of cached frames was read anew (after opening a scene or cache, a refresh).
+    void cachedFramesChanged();
 
 protected:
     void closeEvent(QCloseEvent* event) override;
 
-private Q_SLOTS:
-    void chooseScene();
-    void showAbout();
-
 private:
+    void createParts();
+    void createDocks();
+    QDockWidget* addDock(QWidget* content, const QString& title, const char* objectName,
+                         Qt::DockWidgetArea area);
     void createMenus();
+    void createToolbar();
+    void connectDocument();
+    void connectSelection();
+    void connectPlayback();
+    void connectActions();
     void restoreSettings();
     void saveSettings() const;
 
+    //! Save / Discard / Cancel for unsaved changes; true when it is fine to go on.
+    bool maybeSave();
+    void chooseAndOpenScene();
+    void chooseAndOpenCache();
+    bool chooseAndSaveAs();
+    void updateTitle();
+    void showError(const QString& title, const QString& message);
+
+    void onDocumentChanged();
+    void onFrameLoaded(int frame, std::shared_ptr<const FrameData> data);
+    void onTimelineFrameChanged(int frame);
+    void pointLoaderAtCache();
+    void selectSomethingToEdit();
+    void showAbout();
+
+    std::unique_ptr<SceneDocument> document_;
+    EditorActions* actions_ = nullptr;
     ViewportWidget* viewport_ = nullptr;
+    SceneTreePanel* sceneTree_ = nullptr;
+    ParameterPanel* parameterPanel_ = nullptr;
+    TimelineWidget* timeline_ = nullptr;
+    SimulationController* controller_ = nullptr;
+    FrameLoader* loader_ = nullptr;
+    BakeSession* bakeSession_ = nullptr;
+    LogPanel* log_ = nullptr;
+    StatusBarFields* statusFields_ = nullptr;
+    RecentFiles* recentFiles_ = nullptr;
     QMenu* fileMenu_ = nullptr;
-    QAction* openSceneAction_ = nullptr;
-    QAction* quitAction_ = nullptr;
+    QMenu* viewMenu_ = nullptr;
+    //! Set by openCacheFolder(): bake and view this folder instead of the one next to the file.
+    QString openedCacheDir_;
+    bool interactive_ = true;
 };
 
 } // namespace airtrap

@@ -1,0 +1,90 @@
+// "Change from here": a bake stopped at frame N, continued with edited settings, keeps frames
+// 1..N bit-for-bit and bakes the rest with the new settings; settings that define the particles
+// themselves are refused with the reason.
+#include "cache/FrameCache.h"
+#include "core/Error.h"
+#include "scene/SceneJson.h"
+#include "sim/Baker.h"
+
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace airtrap;
+
+namespace {
+
+Scene smallSplash() {
+    Scene scene;
+    scene.solver.particleSpacing = 0.04;
+    scene.solver.maxSpeed = 4.0;
+    scene.frames.fps = 60.0;
+    scene.frames.endFrame = 5;
+    scene.container.max = Vec3d(0.6, 0.5, 0.24);
+    FluidBlock water;
+    water.max = Vec3d(0.24, 0.32, 0.24);
+    scene.fluidBlocks.push_back(water);
+    return scene;
+}
+
+void bake(const Scene& scene, const std::string& dir, bool resume, int lastFrame,
+          bool adoptEditedScene) {
+    BakeOptions options;
+    options.cacheDir = dir;
+    options.resume = resume;
+    options.overwrite = !resume;
+    options.lastFrame = lastFrame;
+    options.adoptEditedScene = adoptEditedScene;
+    Interrupter interrupter;
+    Baker(scene, options).run(interrupter);
+}
+
+} // namespace
+
+class TestBakerEditedScene : public QObject {
+    Q_OBJECT
+
+private Q_SLOTS:
+    void continuesWithTheEditedScene() {
+        QTemporaryDir folder;
+        const std::string dir = folder.filePath("cache").toStdString();
+        const Scene original = smallSplash();
+        bake(original, dir, false, 3, false);
+        const FrameData frame3 = FrameCache::open(dir).readFrame(3);
+
+        Scene edited = original;
+        edited.solver.viscosityAlpha = 0.3;
+        // Without the editor's consent the cache of another scene is refused, as before.
+        QVERIFY_THROWS_EXCEPTION(Error, bake(edited, dir, true, 0, false));
+
+        bake(edited, dir, true, 0, true);
+        const FrameCache cache = FrameCache::open(dir);
+        QCOMPARE(cache.frames(), (std::vector<int>{1, 2, 3, 4, 5}));
+        QVERIFY(cache.readFrame(3) == frame3);
+        QCOMPARE(cache.manifest().parameterHash, parameterHash(edited));
+        QCOMPARE(cache.manifest().scene["solver"]["viscosity_alpha"].get<double>(), 0.3);
+        QVERIFY(cache.verify().empty());
+    }
+
+    void refusesChangedParticleSpacing() {
+        QTemporaryDir folder;
+        const std::string dir = folder.filePath("cache").toStdString();
+        const Scene original = smallSplash();
+        bake(original, dir, false, 2, false);
+
+        Scene edited = original;
+        edited.solver.particleSpacing = 0.05;
+        try {
+            bake(edited, dir, true, 0, true);
+            QFAIL("a changed particle spacing was accepted mid-bake");
+        } catch (const Error& error) {
+            const QString message = QString::fromUtf8(error.what());
+            QVERIFY2(message.contains("solver.particle_spacing") && message.contains("0.04") &&
+                         message.contains("0.05") && message.contains("frame 1"),
+                     qPrintable(message));
+        }
+        QCOMPARE(FrameCache::open(dir).frames(), (std::vector<int>{1, 2}));
+    }
+};
+
+QTEST_APPLESS_MAIN(TestBakerEditedScene)
+#include "TestBakerEditedScene.moc"

@@ -1,0 +1,269 @@
+// The viewport draws the scene and cached water for real: these tests render into the widget's
+// framebuffer and check pixels where the camera says things are. Runs under a real (virtual) X
+// server: QOpenGLWidget crashes on the offscreen platform.
+#include "scene/SceneJson.h"
+#include "sim/Simulation.h"
+#include "viewport/BoxGizmoDrawable.h"
+#include "viewport/SpeedLegend.h"
+#include "viewport/ViewportWidget.h"
+
+#include <QSignalSpy>
+#include <QTest>
+#include <QWheelEvent>
+
+namespace airtrap {
+
+namespace {
+
+const QSize kViewportSize(640, 480);
+
+Scene damBreak() {
+    return readSceneFile(AIRTRAP_SOURCE_DIR "/samples/dam_break.json");
+}
+
+//! The dam break with an obstacle standing in the empty part of the tank.
+Scene damBreakWithObstacle() {
+    Scene scene = damBreak();
+    BoxObstacle obstacle;
+    obstacle.center = Vec3d(1.6, 0.3, 0.2);
+    obstacle.size = Vec3d(0.3, 0.6, 0.3);
+    scene.obstacles.push_back(obstacle);
+    return scene;
+}
+
+//! Frame 1 of `scene`: the water at rest where the fluid blocks put it.
+std::shared_ptr<const FrameData> initialFrame(const Scene& scene) {
+    Simulation simulation(scene);
+    return std::make_shared<const FrameData>(
+        FrameData{simulation.state(), simulation.lastFrameStats()});
+}
+
+//! Water at rest is deep blue: blue well above red and green, unlike the grey background.
+bool isWater(const QColor& colour) {
+    return colour.blue() >= colour.red() + 40 && colour.blue() >= colour.green() + 20;
+}
+
+bool isHighlight(const QColor& colour) {
+    const QColor highlight = BoxGizmoDrawable::highlightColour();
+    return std::abs(colour.red() - highlight.red()) < 40 &&
+           std::abs(colour.green() - highlight.green()) < 50 &&
+           std::abs(colour.blue() - highlight.blue()) < 50;
+}
+
+QVector3D toQt(const Vec3d& v) {
+    return QVector3D(float(v.x()), float(v.y()), float(v.z()));
+}
+
+//! Pixels of `image` within `radius` of `centre` (widget pixels) that satisfy `test`.
+template <typename Test>
+int countAround(const QImage& image, const QPointF& centre, int radius, qreal ratio, Test test) {
+    int count = 0;
+    const QPoint c = (centre * ratio).toPoint();
+    for (int y = c.y() - radius; y <= c.y() + radius; ++y) {
+        for (int x = c.x() - radius; x <= c.x() + radius; ++x) {
+            count += image.valid(x, y) && test(image.pixelColor(x, y)) ? 1 : 0;
+        }
+    }
+    return count;
+}
+
+int countWater(const QImage& image) {
+    int count = 0;
+    for (int y = 0; y < image.height(); ++y) {
+        for (int x = 0; x < image.width(); ++x) {
+            count += isWater(image.pixelColor(x, y)) ? 1 : 0;
+        }
+    }
+    return count;
+}
+
+QString describe(const QColor& colour) {
+    return colour.name(QColor::HexRgb);
+}
+
+} // namespace
+
+class TestViewport : public QObject {
+    Q_OBJECT
+
+private:
+    //! A shown 640×480 viewport whose context exists.
+    std::unique_ptr<ViewportWidget> shownViewport() {
+        auto viewport = std::make_unique<ViewportWidget>();
+        viewport->resize(kViewportSize);
+        viewport->show();
+        if (!QTest::qWaitForWindowExposed(viewport.get())) {
+            return nullptr;
+        }
+        return viewport;
+    }
+
+    QPointF project(const ViewportWidget& viewport, const QVector3D& point) {
+        return viewport.camera().project(point, viewport.size());
+    }
+
+private Q_SLOTS:
+    void withoutSceneOnlyClears() {
+        const auto viewport = shownViewport();
+        QVERIFY(viewport);
+        const QImage image = viewport->grabFramebuffer();
+        QVERIFY(!image.isNull());
+        const QRgb clear = ViewportWidget::clearColor().rgb();
+        for (const QPoint p : {QPoint(0, 0), QPoint(image.width() / 2, image.height() / 2),
+                               QPoint(image.width() - 1, image.height() - 1)}) {
+            QCOMPARE(QColor(image.pixel(p)).name(), QColor(clear).name());
+        }
+    }
+
+    void damBreakFrameOneShowsTheWaterColumn() {
+        const auto viewport = shownViewport();
+        QVERIFY(viewport);
+        const Scene scene = damBreak();
+        viewport->setScene(scene);
+        viewport->setFrame(initialFrame(scene));
+        QVERIFY(viewport->isPlayback());
+        const QImage image = viewport->grabFramebuffer();
+        const qreal ratio = viewport->devicePixelRatio();
+        QCOMPARE(image.size(), kViewportSize * ratio);
+
+        const QPointF column = project(*viewport, QVector3D(0.25f, 0.5f, 0.2f));
+        const QColor centre = image.pixelColor((column * ratio).toPoint());
+        QVERIFY2(isWater(centre), qPrintable(describe(centre)));
+        QCOMPARE(countAround(image, column, 4, ratio, isWater), 81);
+
+        const QPointF emptyTank = project(*viewport, QVector3D(2.0f, 0.5f, 0.2f));
+        const QColor empty = image.pixelColor((emptyTank * ratio).toPoint());
+        QVERIFY2(!isWater(empty), qPrintable(describe(empty)));
+        QCOMPARE(countAround(image, emptyTank, 4, ratio, isWater), 0);
+
+        // The column's front face alone is 0.5 × 1 m: a few percent of this view.
+        const double share = double(countWater(image)) / double(image.width() * image.height());
+        QVERIFY2(share > 0.015 && share < 0.2, qPrintable(QString::number(share)));
+    }
+
+    void playbackShowsTheSpeedLegend() {
+        const auto viewport = shownViewport();
+        QVERIFY(viewport);
+        const Scene scene = damBreak();
+        viewport->setScene(scene);
+        viewport->setFrame(initialFrame(scene));
+        QCOMPARE(viewport->speedScale(), float(scene.solver.maxSpeed));
+        const QImage image = viewport->grabFramebuffer();
+        const QRect bar = SpeedLegend::barRect(viewport->rect(), viewport->fontMetrics());
+        const qreal ratio = viewport->devicePixelRatio();
+        const QColor slow =
+            image.pixelColor((QPointF(bar.left() + 3, bar.center().y()) * ratio).toPoint());
+        const QColor fast =
+            image.pixelColor((QPointF(bar.right() - 3, bar.center().y()) * ratio).toPoint());
+        QVERIFY2(isWater(slow), qPrintable(describe(slow)));
+        QVERIFY2(fast.red() > 220 && fast.green() > 220 && fast.blue() > 220,
+                 qPrintable(describe(fast)));
+    }
+
+    void nullFrameReturnsToEditMode() {
+        const auto viewport = shownViewport();
+        QVERIFY(viewport);
+        const Scene scene = damBreak();
+        viewport->setScene(scene);
+        viewport->setFrame(initialFrame(scene));
+        const int playbackWater = countWater(viewport->grabFramebuffer());
+
+        viewport->setFrame(nullptr);
+        QVERIFY(!viewport->isPlayback());
+        const QImage image = viewport->grabFramebuffer();
+        const qreal ratio = viewport->devicePixelRatio();
+        // Inside the fluid block's wireframe there is no water any more, and the blue left over
+        // (the block's edges, the z axis) is a fraction of what the water covered.
+        const QPointF column = project(*viewport, QVector3D(0.25f, 0.5f, 0.2f));
+        QCOMPARE(countAround(image, column, 6, ratio, isWater), 0);
+        const int editWater = countWater(image);
+        QVERIFY2(editWater * 2 < playbackWater,
+                 qPrintable(QStringLiteral("%1 vs %2").arg(editWater).arg(playbackWater)));
+        // The legend belongs to playback only.
+        const QRect bar = SpeedLegend::barRect(viewport->rect(), viewport->fontMetrics());
+        const QColor legendSpot =
+            image.pixelColor((QPointF(bar.right() - 3, bar.center().y()) * ratio).toPoint());
+        QVERIFY2(legendSpot.red() < 200, qPrintable(describe(legendSpot)));
+    }
+
+    void clickPicksTheGizmoUnderTheCursor() {
+        const auto viewport = shownViewport();
+        QVERIFY(viewport);
+        const Scene scene = damBreakWithObstacle();
+        viewport->setScene(scene);
+        QSignalSpy picked(viewport.get(), &ViewportWidget::itemPicked);
+
+        const auto clickAt = [&](const QVector3D& point) {
+            QTest::mouseClick(viewport.get(), Qt::LeftButton, {},
+                              project(*viewport, point).toPoint());
+            return picked.isEmpty() ? SceneItem::none()
+                                    : picked.takeLast().at(0).value<SceneItem>();
+        };
+        QCOMPARE(clickAt(toQt(scene.obstacles[0].center)), SceneItem::elementItem("obstacles", 0));
+        QCOMPARE(clickAt(QVector3D(0.25f, 0.5f, 0.2f)), SceneItem::elementItem("fluid_blocks", 0));
+        // The container is a wireframe: picked on its edges (here the front rim), not inside.
+        QCOMPARE(clickAt(QVector3D(1.25f, 2.0f, 0.4f)), SceneItem::sectionItem("container"));
+        QCOMPARE(clickAt(QVector3D(2.0f, 1.2f, 0.2f)), SceneItem::none());
+
+        QTest::mouseClick(viewport.get(), Qt::LeftButton, {}, QPoint(5, 5));
+        QCOMPARE(picked.count(), 1);
+        QCOMPARE(picked.takeFirst().at(0).value<SceneItem>(), SceneItem::none());
+    }
+
+    void dragOrbitsWithoutPicking() {
+        const auto viewport = shownViewport();
+        QVERIFY(viewport);
+        const Scene scene = damBreakWithObstacle();
+        viewport->setScene(scene);
+        QSignalSpy picked(viewport.get(), &ViewportWidget::itemPicked);
+        const QPoint start = project(*viewport, toQt(scene.obstacles[0].center)).toPoint();
+        const float yaw = viewport->camera().yaw();
+        const QVector3D target = viewport->camera().target();
+
+        QTest::mousePress(viewport.get(), Qt::LeftButton, {}, start);
+        QTest::mouseMove(viewport.get(), start + QPoint(15, 0));
+        QTest::mouseMove(viewport.get(), start + QPoint(40, 0));
+        QTest::mouseRelease(viewport.get(), Qt::LeftButton, {}, start + QPoint(40, 0));
+        QCOMPARE(picked.count(), 0);
+        QVERIFY(std::abs(viewport->camera().yaw() - yaw) > 5.0f);
+        QCOMPARE(viewport->camera().target(), target);
+    }
+
+    void selectionIsHighlighted() {
+        const auto viewport = shownViewport();
+        QVERIFY(viewport);
+        const Scene scene = damBreakWithObstacle();
+        viewport->setScene(scene);
+        // The middle of the obstacle's top front edge.
+        const BoxObstacle& obstacle = scene.obstacles[0];
+        const Vec3d edge = obstacle.center + 0.5 * Vec3d(0.0, obstacle.size.y(), obstacle.size.z());
+        const QPointF spot = project(*viewport, toQt(edge));
+        const qreal ratio = viewport->devicePixelRatio();
+
+        QCOMPARE(countAround(viewport->grabFramebuffer(), spot, 3, ratio, isHighlight), 0);
+        viewport->setSelection(SceneItem::elementItem("obstacles", 0));
+        QVERIFY(countAround(viewport->grabFramebuffer(), spot, 3, ratio, isHighlight) >= 3);
+        viewport->setSelection(SceneItem::none());
+        QCOMPARE(countAround(viewport->grabFramebuffer(), spot, 3, ratio, isHighlight), 0);
+    }
+
+    void wheelZoomsAndFrameAllRestores() {
+        const auto viewport = shownViewport();
+        QVERIFY(viewport);
+        viewport->setScene(damBreak());
+        const float fitted = viewport->camera().distance();
+        const QPointF centre(viewport->width() / 2.0, viewport->height() / 2.0);
+        QWheelEvent wheel(centre, viewport->mapToGlobal(centre), QPoint(), QPoint(0, 240),
+                          Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+        QApplication::sendEvent(viewport.get(), &wheel);
+        QVERIFY(viewport->camera().distance() < fitted * 0.8f);
+
+        QTest::keyClick(viewport.get(), Qt::Key_F);
+        QCOMPARE(viewport->camera().distance(), fitted);
+    }
+};
+
+} // namespace airtrap
+
+QTEST_MAIN(airtrap::TestViewport)
+#include "TestViewport.moc"

@@ -1,0 +1,225 @@
+#include "timeline/TimelineWidget.h"
+
+#include "timeline/FrameRuler.h"
+
+#include <QHBoxLayout>
+#include <QSignalBlocker>
+#include <QSpinBox>
+#include <QStyle>
+#include <QTimer>
+#include <QToolButton>
+#include <algorithm>
+#include <cmath>
+
+namespace airtrap {
+
+TimelineWidget::TimelineWidget(QWidget* parent) : QWidget(parent) {
+    playTimer_ = new QTimer(this);
+    playTimer_->setTimerType(Qt::PreciseTimer);
+    connect(playTimer_, &QTimer::timeout, this, &TimelineWidget::advancePlayback);
+    setFps(fps_);
+    createControls();
+}
+
+QToolButton* TimelineWidget::makeButton(const char* objectName, const QString& toolTip) {
+    auto* button = new QToolButton(this);
+    button->setObjectName(QString::fromLatin1(objectName));
+    button->setToolTip(toolTip);
+    button->setAutoRaise(true);
+    // Space and the arrow keys are the main window's shortcuts; a focused button would take them.
+    button->setFocusPolicy(Qt::NoFocus);
+    return button;
+}
+
+void TimelineWidget::createControls() {
+    QToolButton* first = makeButton("firstButton", tr("First frame (Home)"));
+    first->setIcon(style()->standardIcon(QStyle::SP_MediaSkipBackward));
+    connect(first, &QToolButton::clicked, this, &TimelineWidget::goToFirst);
+    QToolButton* back = makeButton("stepBackButton", tr("Previous frame (Left)"));
+    back->setIcon(style()->standardIcon(QStyle::SP_MediaSeekBackward));
+    connect(back, &QToolButton::clicked, this, &TimelineWidget::stepBackward);
+    playButton_ = makeButton("playButton", tr("Play or pause (Space)"));
+    connect(playButton_, &QToolButton::clicked, this, &TimelineWidget::togglePlayback);
+    QToolButton* forward = makeButton("stepForwardButton", tr("Next frame (Right)"));
+    forward->setIcon(style()->standardIcon(QStyle::SP_MediaSeekForward));
+    connect(forward, &QToolButton::clicked, this, &TimelineWidget::stepForward);
+    QToolButton* last = makeButton("lastButton", tr("Newest cached frame (End)"));
+    last->setIcon(style()->standardIcon(QStyle::SP_MediaSkipForward));
+    connect(last, &QToolButton::clicked, this, &TimelineWidget::goToLast);
+    loopButton_ = makeButton("loopButton", tr("Loop playback"));
+    loopButton_->setText(tr("Loop"));
+    loopButton_->setCheckable(true);
+    connect(loopButton_, &QToolButton::toggled, this, &TimelineWidget::setLoop);
+
+    ruler_ = new FrameRuler(this);
+    ruler_->setObjectName(QStringLiteral("frameRuler"));
+    connect(ruler_, &FrameRuler::frameScrubbed, this, &TimelineWidget::setCurrentFrame);
+
+    frameSpinBox_ = new QSpinBox(this);
+    frameSpinBox_->setObjectName(QStringLiteral("frameSpinBox"));
+    frameSpinBox_->setToolTip(tr("Current frame"));
+    frameSpinBox_->setKeyboardTracking(false);
+    frameSpinBox_->setRange(first_, last_);
+    connect(frameSpinBox_, &QSpinBox::valueChanged, this, &TimelineWidget::setCurrentFrame);
+
+    auto* layout = new QHBoxLayout(this);
+    layout->setContentsMargins(4, 2, 4, 2);
+    for (QToolButton* button : {first, back, playButton_, forward, last, loopButton_})
+        layout->addWidget(button);
+    layout->addWidget(ruler_, 1);
+    layout->addWidget(frameSpinBox_);
+    showPlaying();
+}
+
+QList<int> TimelineWidget::cachedFrames() const {
+    return QList<int>(cached_.begin(), cached_.end());
+}
+
+bool TimelineWidget::isPlaying() const {
+    return playTimer_->isActive();
+}
+
+void TimelineWidget::setFrameRange(int first, int last) {
+    first_ = first;
+    last_ = std::max(first, last);
+    ruler_->setFrameRange(first_, last_);
+    {
+        const QSignalBlocker blocker(frameSpinBox_);
+        frameSpinBox_->setRange(first_, last_);
+    }
+    setCurrentFrame(current_);
+}
+
+void TimelineWidget::setCachedFrames(const QList<int>& frames) {
+    cached_ = std::set<int>(frames.begin(), frames.end());
+    showCachedFrames();
+}
+
+void TimelineWidget::addCachedFrame(int frame) {
+    if (cached_.insert(frame).second)
+        showCachedFrames();
+}
+
+void TimelineWidget::setFps(double fps) {
+    if (!(fps > 0.0))
+        return;
+    fps_ = fps;
+    playTimer_->setInterval(std::max(1, int(std::lround(1000.0 / fps))));
+}
+
+void TimelineWidget::setBakeRunning(bool running) {
+    bakeRunning_ = running;
+}
+
+void TimelineWidget::setCurrentFrame(int frame) {
+    frame = std::clamp(frame, first_, last_);
+    if (frame == current_)
+        return;
+    current_ = frame;
+    ruler_->setCurrentFrame(frame);
+    {
+        const QSignalBlocker blocker(frameSpinBox_);
+        frameSpinBox_->setValue(frame);
+    }
+    Q_EMIT currentFrameChanged(frame);
+}
+
+void TimelineWidget::play() {
+    if (isPlaying())
+        return;
+    const bool atEnd = !cachedFrameAfter(current_);
+    if (atEnd && !bakeRunning_) {
+        // Nothing ahead: start over from the first cached frame, as players do.
+        const std::optional<int> firstCached = firstCachedFrame();
+        if (!firstCached)
+            return;
+        setCurrentFrame(*firstCached);
+    }
+    playTimer_->start();
+    showPlaying();
+    Q_EMIT playingChanged(true);
+}
+
+void TimelineWidget::pause() {
+    if (!isPlaying())
+        return;
+    playTimer_->stop();
+    showPlaying();
+    Q_EMIT playingChanged(false);
+}
+
+void TimelineWidget::togglePlayback() {
+    if (isPlaying())
+        pause();
+    else
+        play();
+}
+
+void TimelineWidget::setLoop(bool loop) {
+    loop_ = loop;
+    const QSignalBlocker blocker(loopButton_);
+    loopButton_->setChecked(loop);
+}
+
+void TimelineWidget::stepForward() {
+    setCurrentFrame(current_ + 1);
+}
+
+void TimelineWidget::stepBackward() {
+    setCurrentFrame(current_ - 1);
+}
+
+void TimelineWidget::goToFirst() {
+    setCurrentFrame(first_);
+}
+
+void TimelineWidget::goToLast() {
+    setCurrentFrame(lastCachedFrame().value_or(last_));
+}
+
+void TimelineWidget::advancePlayback() {
+    if (const std::optional<int> next = cachedFrameAfter(current_)) {
+        setCurrentFrame(*next);
+        return;
+    }
+    const std::optional<int> firstCached = firstCachedFrame();
+    if (loop_ && firstCached && *firstCached != current_)
+        setCurrentFrame(*firstCached);
+    else if (!bakeRunning_)
+        pause();
+    // Otherwise the bake's next frame is on its way: keep ticking until it arrives.
+}
+
+std::optional<int> TimelineWidget::cachedFrameAfter(int frame) const {
+    const auto next = cached_.upper_bound(std::max(frame, first_ - 1));
+    if (next == cached_.end() || *next > last_)
+        return std::nullopt;
+    return *next;
+}
+
+std::optional<int> TimelineWidget::firstCachedFrame() const {
+    const auto first = cached_.lower_bound(first_);
+    if (first == cached_.end() || *first > last_)
+        return std::nullopt;
+    return *first;
+}
+
+std::optional<int> TimelineWidget::lastCachedFrame() const {
+    const auto afterLast = cached_.upper_bound(last_);
+    if (afterLast == cached_.begin() || *std::prev(afterLast) < first_)
+        return std::nullopt;
+    return *std::prev(afterLast);
+}
+
+void TimelineWidget::showCachedFrames() {
+    ruler_->setCachedFrames(std::vector<int>(cached_.begin(), cached_.end()));
+}
+
+void TimelineWidget::showPlaying() {
+    const bool playing = isPlaying();
+    playButton_->setIcon(
+        style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+    playButton_->setText(playing ? tr("Pause") : tr("Play"));
+}
+
+} // namespace airtrap

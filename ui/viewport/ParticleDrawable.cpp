@@ -1,0 +1,162 @@
+#include "viewport/ParticleDrawable.h"
+
+#include "viewport/RenderContext.h"
+#include "viewport/ShaderSources.h"
+#include "viewport/SpeedColormap.h"
+
+#include <QOpenGLContext>
+#include <QOpenGLExtraFunctions>
+#include <algorithm>
+#include <cstdint>
+
+namespace airtrap {
+
+// Positions go to the GPU straight from the frame's array.
+static_assert(sizeof(Vec3f) == 3 * sizeof(float));
+
+namespace {
+
+// Slowest scale the colours stretch over: water at rest (frame 1) must stay blue, not divide by 0.
+constexpr float kMinSpeedScale = 0.05f; // m/s
+
+// The sprite covers the sphere's projected diameter: 2 r × (pixels per metre at depth w).
+const char* const kVertexShader = R"(#version 330 core
+layout(location = 0) in vec3 position;
+layout(location = 1) in float speed;
+uniform mat4 view;
+uniform mat4 projection;
+uniform float radius;
+uniform float viewportHeight;
+uniform float speedScale;
+out vec3 eyeCentre;
+out float colourParameter;
+void main() {
+    vec4 eye = view * vec4(position, 1.0);
+    eyeCentre = eye.xyz;
+    gl_Position = projection * eye;
+    gl_PointSize = max(radius * projection[1][1] * viewportHeight / gl_Position.w, 1.0);
+    colourParameter = speed / speedScale;
+}
+)";
+
+// Shades the sprite as a sphere: the normal follows from the position on the disc; a key light
+// from the upper left of the view plus ambient, a little specular; depth is that of the sphere's
+// surface so that neighbouring particles intersect like balls, not like flat discs.
+const char* const kFragmentShaderMain = R"(
+uniform mat4 projection;
+uniform float radius;
+in vec3 eyeCentre;
+in float colourParameter;
+out vec4 fragColour;
+const vec3 lightDirection = normalize(vec3(-0.35, 0.55, 0.75));
+void main() {
+    vec2 disc = gl_PointCoord * 2.0 - 1.0;
+    disc.y = -disc.y; // gl_PointCoord grows downwards
+    float r2 = dot(disc, disc);
+    if (r2 > 1.0) {
+        discard;
+    }
+    vec3 normal = vec3(disc, sqrt(1.0 - r2));
+    float diffuse = max(dot(normal, lightDirection), 0.0);
+    vec3 halfway = normalize(lightDirection + vec3(0.0, 0.0, 1.0));
+    float specular = 0.3 * pow(max(dot(normal, halfway), 0.0), 48.0);
+    vec3 base = speedColour(colourParameter);
+    fragColour = vec4(base * (0.35 + 0.65 * diffuse) + vec3(specular), 1.0);
+    vec4 surface = projection * vec4(eyeCentre + normal * radius, 1.0);
+    gl_FragDepth = 0.5 * surface.z / surface.w + 0.5;
+}
+)";
+
+QString fragmentShader() {
+    return QStringLiteral("#version 330 core\n") + SpeedColormap::glslFunction() +
+           QString::fromLatin1(kFragmentShaderMain);
+}
+
+} // namespace
+
+ParticleDrawable::ParticleDrawable() : buffer_(QOpenGLBuffer::VertexBuffer) {}
+
+ParticleDrawable::~ParticleDrawable() = default;
+
+void ParticleDrawable::setFrame(std::shared_ptr<const FrameData> frame) {
+    const std::vector<Vec3f> empty;
+    const std::vector<Vec3f>& velocities = frame ? frame->state.fluid.velocities : empty;
+    speeds_.resize(velocities.size());
+    std::transform(velocities.begin(), velocities.end(), speeds_.begin(),
+                   [](const Vec3f& v) { return v.norm(); });
+    maxSpeed_ = speeds_.empty() ? 0.0f : *std::max_element(speeds_.begin(), speeds_.end());
+    count_ = int(speeds_.size());
+    frame_ = std::move(frame);
+    dirty_ = true;
+}
+
+float ParticleDrawable::effectiveSpeedScale() const {
+    return std::max(speedScale_ > 0.0f ? speedScale_ : maxSpeed_, kMinSpeedScale);
+}
+
+void ParticleDrawable::initialize() {
+    program_ = ShaderSources{"particles", kVertexShader, QString(), fragmentShader()}.build();
+    vertexArray_.create();
+    buffer_.create();
+    buffer_.setUsagePattern(QOpenGLBuffer::DynamicDraw);
+    uploadedCount_ = 0;
+    dirty_ = true;
+}
+
+void ParticleDrawable::upload() {
+    dirty_ = false;
+    uploadedCount_ = 0;
+    if (!frame_) {
+        return;
+    }
+    const std::vector<Vec3f>& positions = frame_->state.fluid.positions;
+    const int positionBytes = int(positions.size() * sizeof(Vec3f));
+    const int speedBytes = int(speeds_.size() * sizeof(float));
+    QOpenGLExtraFunctions* gl = QOpenGLContext::currentContext()->extraFunctions();
+    QOpenGLVertexArrayObject::Binder binder(&vertexArray_);
+    buffer_.bind();
+    buffer_.allocate(positionBytes + speedBytes);
+    buffer_.write(0, positions.data(), positionBytes);
+    buffer_.write(positionBytes, speeds_.data(), speedBytes);
+    gl->glEnableVertexAttribArray(0);
+    gl->glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(Vec3f), nullptr);
+    gl->glEnableVertexAttribArray(1);
+    gl->glVertexAttribPointer(1, 1, GL_FLOAT, GL_FALSE, sizeof(float),
+                              reinterpret_cast<const void*>(std::intptr_t(positionBytes)));
+    buffer_.release();
+    uploadedCount_ = int(positions.size());
+}
+
+void ParticleDrawable::draw(const RenderContext& context) {
+    if (!program_) {
+        return;
+    }
+    if (dirty_) {
+        upload();
+    }
+    if (uploadedCount_ == 0) {
+        return;
+    }
+    QOpenGLExtraFunctions& gl = context.gl;
+    gl.glEnable(GL_DEPTH_TEST);
+    gl.glEnable(GL_PROGRAM_POINT_SIZE);
+    program_->bind();
+    program_->setUniformValue("view", context.view);
+    program_->setUniformValue("projection", context.projection);
+    program_->setUniformValue("radius", radius_);
+    program_->setUniformValue("viewportHeight", float(context.framebufferSize.height()));
+    program_->setUniformValue("speedScale", effectiveSpeedScale());
+    QOpenGLVertexArrayObject::Binder binder(&vertexArray_);
+    gl.glDrawArrays(GL_POINTS, 0, uploadedCount_);
+    program_->release();
+    gl.glDisable(GL_PROGRAM_POINT_SIZE);
+}
+
+void ParticleDrawable::release() {
+    program_.reset();
+    buffer_.destroy();
+    vertexArray_.destroy();
+    uploadedCount_ = 0;
+}
+
+} // namespace airtrap

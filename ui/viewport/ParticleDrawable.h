@@ -1,0 +1,60 @@
+#pragma once
+// The water of a cached frame as shaded point sprites: each particle is one GL point whose size
+// follows the perspective, drawn as a lit sphere and coloured by speed. A frame is uploaded once
+// (positions, then speeds, in one buffer) and then drawn with a single call per paint, which keeps
+// the view interactive with hundreds of thousands of particles.
+#include "cache/FrameFile.h"
+#include "viewport/Drawable.h"
+
+#include <QOpenGLBuffer>
+#include <QOpenGLShaderProgram>
+#include <QOpenGLVertexArrayObject>
+#include <memory>
+#include <vector>
+
+namespace airtrap {
+
+class ParticleDrawable : public Drawable {
+public:
+    ParticleDrawable();
+    ~ParticleDrawable() override;
+
+    //! Shows the water of `frame` (null: none). Speeds are computed here, once per frame; the
+    //! upload waits for the next draw, so frames that arrive faster than paints are skipped.
+    //! The frame is kept: a new context (the widget moved to another window) uploads it again.
+    void setFrame(std::shared_ptr<const FrameData> frame);
+    //! Radius of the drawn spheres in metres.
+    void setRadius(float metres) { radius_ = metres; }
+    //! Speed drawn white; 0 and below make it follow each frame's fastest particle.
+    void setSpeedScale(float metresPerSecond) { speedScale_ = metresPerSecond; }
+    //! The speed drawn white: the fixed scale, or the frame's fastest particle.
+    float effectiveSpeedScale() const;
+    //! Speed of the current frame's fastest particle, m/s.
+    float maxSpeed() const { return maxSpeed_; }
+    //! Particles of the current frame.
+    int particleCount() const { return count_; }
+
+    //! Builds the sprite shader and the buffer.
+    void initialize() override;
+    //! Uploads a new frame if there is one, then draws all particles in one call.
+    void draw(const RenderContext& context) override;
+    //! Frees the GL objects.
+    void release() override;
+
+private:
+    void upload();
+
+    std::unique_ptr<QOpenGLShaderProgram> program_;
+    QOpenGLBuffer buffer_;
+    QOpenGLVertexArrayObject vertexArray_;
+    std::shared_ptr<const FrameData> frame_;
+    std::vector<float> speeds_; //!< of frame_, in its particle order
+    bool dirty_ = false;        //!< frame_ is not what the buffer holds
+    int count_ = 0;
+    int uploadedCount_ = 0;
+    float radius_ = 0.01f;
+    float speedScale_ = 0.0f;
+    float maxSpeed_ = 0.0f;
+};
+
+} // namespace airtrap

@@ -1,0 +1,83 @@
+#include "viewport/SceneGizmos.h"
+
+#include <limits>
+
+namespace airtrap {
+
+namespace {
+
+QVector3D toQt(const Vec3d& v) {
+    return QVector3D(float(v.x()), float(v.y()), float(v.z()));
+}
+
+} // namespace
+
+SceneGizmos::SceneGizmos(const Scene& scene) : headroom_(float(scene.container.headroom)) {
+    boxes_.push_back({GizmoBox::Kind::Container, SceneItem::sectionItem("container"),
+                      toQt(scene.container.min), toQt(scene.container.max)});
+    for (std::size_t i = 0; i < scene.fluidBlocks.size(); ++i) {
+        const FluidBlock& block = scene.fluidBlocks[i];
+        boxes_.push_back({GizmoBox::Kind::FluidBlock, SceneItem::elementItem("fluid_blocks", i),
+                          toQt(block.min), toQt(block.max)});
+    }
+    for (std::size_t i = 0; i < scene.obstacles.size(); ++i) {
+        const BoxObstacle& obstacle = scene.obstacles[i];
+        const Vec3d half = 0.5 * obstacle.size;
+        boxes_.push_back({GizmoBox::Kind::Obstacle, SceneItem::elementItem("obstacles", i),
+                          toQt(obstacle.center - half), toQt(obstacle.center + half)});
+    }
+}
+
+std::array<std::pair<QVector3D, QVector3D>, 12> SceneGizmos::edgesOf(const QVector3D& min,
+                                                                     const QVector3D& max) {
+    // Corner i takes max on axis k when bit k of i is set.
+    auto corner = [&](int i) {
+        return QVector3D(i & 1 ? max.x() : min.x(), i & 2 ? max.y() : min.y(),
+                         i & 4 ? max.z() : min.z());
+    };
+    std::array<std::pair<QVector3D, QVector3D>, 12> edges;
+    std::size_t count = 0;
+    for (int i = 0; i < 8; ++i) {
+        for (int bit = 1; bit < 8; bit <<= 1) {
+            if (!(i & bit)) {
+                edges[count++] = {corner(i), corner(i | bit)};
+            }
+        }
+    }
+    return edges;
+}
+
+float SceneGizmos::hitDistance(const GizmoBox& box, const Ray& ray, const PickOptions& options) {
+    if (box.kind != GizmoBox::Kind::Container) {
+        const std::optional<float> hit = ray.hitBox(box.min, box.max);
+        return hit ? *hit : -1.0f;
+    }
+    float nearest = -1.0f;
+    for (const auto& [a, b] : edgesOf(box.min, box.max)) {
+        const Ray::SegmentApproach approach = ray.approach(a, b);
+        const float tolerance =
+            options.edgeTolerancePixels * options.metresPerPixelPerDepth * approach.alongRay;
+        if (approach.gap <= tolerance && (nearest < 0.0f || approach.alongRay < nearest)) {
+            nearest = approach.alongRay;
+        }
+    }
+    return nearest;
+}
+
+SceneItem SceneGizmos::pick(const Ray& ray, const PickOptions& options) const {
+    SceneItem picked = SceneItem::none();
+    float nearest = std::numeric_limits<float>::max();
+    for (const GizmoBox& box : boxes_) {
+        if (box.kind == GizmoBox::Kind::FluidBlock && !options.fluidBlocks) {
+            continue;
+        }
+        const float distance = hitDistance(box, ray, options);
+        if (distance >= 0.0f && distance < nearest) {
+            nearest = distance;
+            picked = box.item;
+        }
+    }
+    return picked;
+}
+
+} // namespace airtrap

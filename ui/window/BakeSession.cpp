@@ -1,0 +1,229 @@
+#include "window/BakeSession.h"
+
+#include "controller/SimulationController.h"
+#include "document/SceneDocument.h"
+#include "timeline/FrameLoader.h"
+#include "timeline/TimelineWidget.h"
+#include "window/EditorActions.h"
+#include "window/LogPanel.h"
+#include "window/StatusBarFields.h"
+
+#include <QAction>
+#include <QMessageBox>
+#include <QTimer>
+
+namespace airtrap {
+
+namespace {
+//! Discarding needs the bake thread gone; a step of a large scene can take seconds.
+constexpr int kStopTimeoutMs = 60000;
+} // namespace
+
+BakeSession::BakeSession(SceneDocument& document, SimulationController& controller,
+                         TimelineWidget& timeline, FrameLoader& loader, LogPanel& log,
+                         StatusBarFields& statusFields, EditorActions& actions,
+                         QWidget* dialogParent)
+    : QObject(dialogParent), document_(document), controller_(controller), timeline_(timeline),
+      loader_(loader), log_(log), statusFields_(statusFields), actions_(actions),
+      dialogParent_(dialogParent) {
+    connectActions();
+    connectController();
+    connect(&loader_, &FrameLoader::framesListed, this, &BakeSession::onFramesListed);
+    updateActions();
+}
+
+void BakeSession::setCacheDirectoryProvider(std::function<QString()> provider) {
+    cacheDirectory_ = std::move(provider);
+}
+
+void BakeSession::connectActions() {
+    connect(actions_.bake, &QAction::triggered, this, &BakeSession::bake);
+    connect(actions_.resume, &QAction::triggered, this, &BakeSession::resumeBake);
+    connect(actions_.pause, &QAction::triggered, &controller_, &SimulationController::pause);
+    connect(actions_.stop, &QAction::triggered, &controller_, &SimulationController::stop);
+    connect(actions_.clearCache, &QAction::triggered, this, &BakeSession::clearCache);
+}
+
+void BakeSession::connectController() {
+    connect(&controller_, &SimulationController::stateChanged, this,
+            [this](SimulationController::State state) {
+                timeline_.setBakeRunning(state != SimulationController::State::Idle);
+                updateActions();
+            });
+    connect(&controller_, &SimulationController::progress, this, &BakeSession::onProgress);
+    connect(&controller_, &SimulationController::frameFinished, this,
+            [this](int frame) { onFrameFinished(frame); });
+    connect(&controller_, &SimulationController::message, &log_, &LogPanel::info);
+    connect(&controller_, &SimulationController::finished, this, &BakeSession::onFinished);
+    connect(&controller_, &SimulationController::failed, this, &BakeSession::onFailed);
+}
+
+// --- Actions ------------------------------------------------------------------------------------
+
+void BakeSession::bake() {
+    if (controller_.isBusy())
+        return;
+    const QString dir = cacheDirectory_();
+    if (lastCachedFrame() > 1 &&
+        !confirm(
+            tr("Bake"),
+            tr("Replace the %1 cached frames in %2 with a new bake?").arg(cached_.size()).arg(dir),
+            true))
+        return;
+    cached_.clear();
+    timeline_.setCachedFrames({});
+    staleFramesAccepted_ = false;
+    // A fresh bake rewrites the folder: the loader must forget the frames it kept from it.
+    loader_.setCacheDirectory(dir);
+    log_.info(tr("Baking %1 into %2").arg(document_.displayName(), dir));
+    controller_.bake(document_.scene(), dir, false);
+}
+
+void BakeSession::resumeBake() {
+    if (controller_.state() == SimulationController::State::Paused) {
+        controller_.resume();
+        return;
+    }
+    if (controller_.isBusy())
+        return;
+    staleFramesAccepted_ = false;
+    log_.info(tr("Resuming the bake from frame %1").arg(lastCachedFrame()));
+    controller_.bake(document_.scene(), cacheDirectory_(), true);
+}
+
+void BakeSession::clearCache() {
+    if (controller_.isBusy() || cached_.empty())
+        return;
+    if (!confirm(tr("Clear Cache"),
+                 tr("Delete all %1 cached frames of this scene?").arg(cached_.size()), true))
+        return;
+    discardFramesAfter(0);
+}
+
+bool BakeSession::releaseCache() {
+    if (!controller_.isBusy())
+        return true;
+    if (!confirm(tr("Bake running"),
+                 tr("A bake is running. Stop it? The frames it finished stay in the cache."), true))
+        return false;
+    controller_.stop();
+    controller_.waitForIdle(kStopTimeoutMs);
+    return true;
+}
+
+void BakeSession::cacheFolderChanged() {
+    cached_.clear();
+    timeline_.setCachedFrames({});
+    staleFramesAccepted_ = false;
+    loader_.setCacheDirectory(cacheDirectory_());
+    updateActions();
+}
+
+// --- Edits while frames exist -------------------------------------------------------------------
+
+void BakeSession::sceneEdited() {
+    if (staleQuestionPending_ || staleFramesAccepted_)
+        return;
+    if (!controller_.isBusy() && lastCachedFrame() <= timeline_.currentFrame())
+        return;
+    // Asked from the event loop, not inside the edit: the edit may be one step of a slider drag.
+    staleQuestionPending_ = true;
+    QTimer::singleShot(0, this, &BakeSession::askAboutStaleFrames);
+}
+
+void BakeSession::askAboutStaleFrames() {
+    staleQuestionPending_ = false;
+    const int keep = std::max(1, timeline_.currentFrame());
+    const bool discard =
+        confirm(tr("Scene changed"),
+                tr("The frames after frame %1 were baked with the old settings. Discard them?\n\n"
+                   "Frames 1–%1 stay; Resume then continues from frame %1 with the new settings.")
+                    .arg(keep),
+                false);
+    if (!discard) {
+        staleFramesAccepted_ = true;
+        log_.warning(tr("Kept cached frames that were baked with the previous settings"));
+        return;
+    }
+    discardFramesAfter(keep);
+}
+
+void BakeSession::discardFramesAfter(int frame) {
+    if (controller_.isBusy()) {
+        controller_.stop();
+        controller_.waitForIdle(kStopTimeoutMs);
+    }
+    controller_.discardFramesAfter(cacheDirectory_(), frame);
+    log_.info(frame > 0 ? tr("Discarded the frames after frame %1").arg(frame)
+                        : tr("Cleared the cache"));
+    loader_.refresh();
+}
+
+// --- Controller and loader reports --------------------------------------------------------------
+
+void BakeSession::onFrameFinished(int frame) {
+    // Follow the bake while the user watches its newest frame; leave them alone otherwise.
+    const bool following = !timeline_.isPlaying() && timeline_.currentFrame() == lastCachedFrame();
+    cached_.insert(frame);
+    timeline_.addCachedFrame(frame);
+    loader_.refresh();
+    updateActions();
+    if (following)
+        timeline_.setCurrentFrame(frame);
+}
+
+void BakeSession::onFramesListed(const QList<int>& frames) {
+    cached_ = std::set<int>(frames.begin(), frames.end());
+    timeline_.setCachedFrames(frames);
+    updateActions();
+    Q_EMIT cachedFramesChanged();
+}
+
+void BakeSession::onProgress(const BakeProgress& progress) {
+    statusFields_.showBakeProgress(progress);
+    Q_EMIT statusMessage(tr("Baking frame %1 of %2 — %3 %")
+                             .arg(progress.frame)
+                             .arg(progress.lastFrame)
+                             .arg(qRound(progress.frameFraction * 100.0)));
+}
+
+void BakeSession::onFinished(bool completed, const QString& status) {
+    statusFields_.clearBake();
+    log_.info(completed ? tr("Bake complete") : tr("Bake %1").arg(status));
+    Q_EMIT statusMessage(completed ? tr("Bake complete") : tr("Bake %1").arg(status));
+    loader_.refresh();
+}
+
+void BakeSession::onFailed(const QString& message) {
+    statusFields_.clearBake();
+    log_.error(message);
+    Q_EMIT statusMessage(tr("Bake failed"));
+    loader_.refresh();
+    if (interactive_)
+        QMessageBox::critical(dialogParent_, tr("Bake failed"),
+                              tr("%1\n\nEvery frame finished before this is kept.").arg(message));
+}
+
+void BakeSession::updateActions() {
+    using State = SimulationController::State;
+    const State state = controller_.state();
+    const bool idle = state == State::Idle;
+    actions_.bake->setEnabled(idle);
+    actions_.pause->setEnabled(state == State::Running);
+    actions_.resume->setEnabled(
+        state == State::Paused ||
+        (idle && lastCachedFrame() > 0 && lastCachedFrame() < document_.scene().frames.endFrame));
+    actions_.stop->setEnabled(state == State::Running || state == State::Paused);
+    actions_.clearCache->setEnabled(idle && !cached_.empty());
+}
+
+bool BakeSession::confirm(const QString& title, const QString& question, bool defaultAnswer) {
+    if (!interactive_)
+        return defaultAnswer;
+    const auto answer =
+        QMessageBox::question(dialogParent_, title, question, QMessageBox::Yes | QMessageBox::No,
+                              defaultAnswer ? QMessageBox::Yes : QMessageBox::No);
+    return answer == QMessageBox::Yes;
+}
+
+} // namespace airtrap

@@ -1,0 +1,117 @@
+#include "window/EditorActions.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QKeySequence>
+#include <QStyle>
+#include <QWidget>
+
+namespace airtrap {
+
+namespace {
+
+QIcon standardIcon(QStyle::StandardPixmap pixmap) {
+    return QApplication::style()->standardIcon(pixmap);
+}
+
+QAction* checkable(QAction* action, bool checked) {
+    action->setCheckable(true);
+    action->setChecked(checked);
+    return action;
+}
+
+} // namespace
+
+EditorActions::EditorActions(QWidget* window) : QObject(window), window_(window) {
+    makeFileActions();
+    makeEditActions();
+    makeSimulationActions();
+    makeViewActions();
+    makePlaybackActions();
+    about = make("aboutAction", tr("&About Airtrap"), tr("Version and the method behind it"));
+    about->setMenuRole(QAction::AboutRole);
+}
+
+QAction* EditorActions::make(const char* objectName, const QString& text,
+                             const QString& statusTip) {
+    auto* action = new QAction(text, window_);
+    action->setObjectName(QLatin1String(objectName));
+    action->setStatusTip(statusTip);
+    window_->addAction(action);
+    return action;
+}
+
+void EditorActions::makeFileActions() {
+    newScene = make("newSceneAction", tr("&New Scene"), tr("Start a new scene"));
+    newScene->setShortcut(QKeySequence::New);
+    newScene->setIcon(standardIcon(QStyle::SP_FileIcon));
+    openScene = make("openSceneAction", tr("&Open Scene…"), tr("Open a scene file"));
+    openScene->setShortcut(QKeySequence::Open);
+    openScene->setIcon(standardIcon(QStyle::SP_DialogOpenButton));
+    openCache = make("openCacheAction", tr("Open &Cache Folder…"),
+                     tr("View a baked cache without its scene file"));
+    openCache->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O));
+    saveScene = make("saveSceneAction", tr("&Save"), tr("Save the scene"));
+    saveScene->setShortcut(QKeySequence::Save);
+    saveScene->setIcon(standardIcon(QStyle::SP_DialogSaveButton));
+    saveSceneAs = make("saveSceneAsAction", tr("Save &As…"), tr("Save the scene to a new file"));
+    saveSceneAs->setShortcut(QKeySequence::SaveAs);
+    quit = make("quitAction", tr("&Quit"), tr("Close the editor"));
+    // Spelled out: QKeySequence::Quit is empty on some desktops, Ctrl+Q is what users expect.
+    quit->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Q));
+    quit->setMenuRole(QAction::QuitRole);
+}
+
+void EditorActions::makeEditActions() {
+    duplicate = make("duplicateAction", tr("&Duplicate"), tr("Copy the selected object"));
+    duplicate->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_D));
+    remove = make("removeAction", tr("&Remove"), tr("Remove the selected object"));
+    remove->setShortcut(QKeySequence::Delete);
+    // Text fields claim Delete for themselves (ShortcutOverride), so typing is unaffected.
+    rename = make("renameAction", tr("Re&name"), tr("Rename the selected object"));
+    rename->setShortcut(QKeySequence(Qt::Key_F2));
+}
+
+void EditorActions::makeSimulationActions() {
+    bake = make("bakeAction", tr("&Bake"), tr("Simulate the scene from frame 1 into its cache"));
+    bake->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_B));
+    bake->setIcon(standardIcon(QStyle::SP_MediaPlay));
+    pause = make("pauseAction", tr("&Pause"), tr("Hold the bake after the current step"));
+    pause->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P));
+    pause->setIcon(standardIcon(QStyle::SP_MediaPause));
+    resume = make("resumeAction", tr("&Resume"),
+                  tr("Continue a paused bake, or a stopped one from its last frame"));
+    resume->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_B));
+    resume->setIcon(standardIcon(QStyle::SP_MediaSeekForward));
+    stop = make("stopAction", tr("&Stop"), tr("Stop the bake after the current step"));
+    stop->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Period));
+    stop->setIcon(standardIcon(QStyle::SP_MediaStop));
+    clearCache =
+        make("clearCacheAction", tr("&Clear Cache…"), tr("Delete the baked frames of this scene"));
+}
+
+void EditorActions::makeViewActions() {
+    frameAll = make("frameAllAction", tr("&Frame All"), tr("Fit the whole scene in the view"));
+    frameAll->setShortcut(QKeySequence(Qt::Key_F));
+    showGrid = checkable(make("showGridAction", tr("&Grid"), tr("Show the ground grid")), true);
+    showAxes = checkable(make("showAxesAction", tr("&Axes"), tr("Show the world axes")), true);
+    showGizmos = checkable(make("showGizmosAction", tr("G&izmos"),
+                                tr("Show the container, fluid blocks and obstacles")),
+                           true);
+}
+
+void EditorActions::makePlaybackActions() {
+    playPause = make("playPauseAction", tr("&Play / Pause"), tr("Play the cached frames"));
+    playPause->setShortcut(QKeySequence(Qt::Key_Space));
+    stepForward = make("stepForwardAction", tr("Step &Forward"), tr("Next frame"));
+    stepForward->setShortcut(QKeySequence(Qt::Key_Right));
+    stepBackward = make("stepBackwardAction", tr("Step &Backward"), tr("Previous frame"));
+    stepBackward->setShortcut(QKeySequence(Qt::Key_Left));
+    firstFrame = make("firstFrameAction", tr("F&irst Frame"), tr("Go to frame 1"));
+    firstFrame->setShortcut(QKeySequence(Qt::Key_Home));
+    lastFrame = make("lastFrameAction", tr("&Last Frame"), tr("Go to the last cached frame"));
+    lastFrame->setShortcut(QKeySequence(Qt::Key_End));
+    loop = checkable(make("loopAction", tr("L&oop"), tr("Start again after the last frame")), true);
+}
+
+} // namespace airtrap

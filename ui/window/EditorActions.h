@@ -1,0 +1,62 @@
+#pragma once
+// Every menu and toolbar action of the editor, with its text, shortcut, icon and status tip, in
+// one place so the menus, the toolbar and the tests find the same objects. MainWindow connects
+// them; this class only makes them.
+#include <QObject>
+
+class QAction;
+class QWidget;
+
+namespace airtrap {
+
+class EditorActions : public QObject {
+    Q_OBJECT
+
+public:
+    //! The actions are children of `window`, so their shortcuts work anywhere in it.
+    explicit EditorActions(QWidget* window);
+
+    // File
+    QAction* newScene;
+    QAction* openScene;
+    QAction* openCache;
+    QAction* saveScene;
+    QAction* saveSceneAs;
+    QAction* quit;
+    // Edit (Undo and Redo come from the undo stack)
+    QAction* duplicate;
+    QAction* remove;
+    QAction* rename;
+    // Simulation
+    QAction* bake;
+    QAction* pause;
+    QAction* resume;
+    QAction* stop;
+    QAction* clearCache;
+    // View
+    QAction* frameAll;
+    QAction* showGrid;
+    QAction* showAxes;
+    QAction* showGizmos;
+    // Playback
+    QAction* playPause;
+    QAction* stepForward;
+    QAction* stepBackward;
+    QAction* firstFrame;
+    QAction* lastFrame;
+    QAction* loop;
+    // Help
+    QAction* about;
+
+private:
+    QAction* make(const char* objectName, const QString& text, const QString& statusTip);
+    void makeFileActions();
+    void makeEditActions();
+    void makeSimulationActions();
+    void makeViewActions();
+    void makePlaybackActions();
+
+    QWidget* window_;
+};
+
+} // namespace airtrap

@@ -1,0 +1,36 @@
+#pragma once
+// The File ▸ Open Recent menu, remembered across sessions in QSettings.
+#include <QObject>
+#include <QStringList>
+
+class QMenu;
+
+namespace airtrap {
+
+class RecentFiles : public QObject {
+    Q_OBJECT
+
+public:
+    static constexpr int kMaximumEntries = 10;
+
+    //! `menu` is filled and kept up to date; it is not owned.
+    RecentFiles(QMenu* menu, QObject* parent = nullptr);
+
+    QStringList files() const { return files_; }
+    //! Moves `path` to the top of the list (adding it when new) and saves the list.
+    void add(const QString& path);
+    //! Drops `path` (a file that could not be opened any more).
+    void remove(const QString& path);
+
+Q_SIGNALS:
+    void fileChosen(const QString& path);
+
+private:
+    void save() const;
+    void rebuildMenu();
+
+    QMenu* menu_;
+    QStringList files_;
+};
+
+} // namespace airtrap

@@ -1,0 +1,109 @@
+#include "window/ScreenshotJob.h"
+
+#include "timeline/FrameLoader.h"
+#include "viewport/ViewportWidget.h"
+#include "window/MainWindow.h"
+
+#include <QImage>
+#include <QTimer>
+
+namespace airtrap {
+
+namespace {
+// Loading a large frame on a slow disk plus the first software-GL paint stay well within this.
+constexpr int kTimeoutMs = 120000;
+// The viewport repaints on the next frame after it receives data; give it a few.
+constexpr int kSettleMs = 300;
+} // namespace
+
+ScreenshotJob::ScreenshotJob(MainWindow& window, ScreenshotRequest request, QObject* parent)
+    : QObject(parent), window_(window), request_(std::move(request)), timeout_(new QTimer(this)) {
+    timeout_->setSingleShot(true);
+    connect(timeout_, &QTimer::timeout, this,
+            [this] { fail(tr("timed out waiting for frame %1").arg(request_.frame)); });
+}
+
+void ScreenshotJob::start() {
+    window_.setInteractive(false);
+    if (!open())
+        return;
+    if (request_.wholeWindow)
+        window_.resize(request_.size);
+    else
+        window_.viewport()->setFixedSize(request_.size);
+    window_.show();
+    timeout_->start(kTimeoutMs);
+    if (request_.frame <= 0) {
+        QTimer::singleShot(kSettleMs, this, &ScreenshotJob::capture);
+        return;
+    }
+    connect(&window_, &MainWindow::frameShown, this, [this](int frame) {
+        if (frame == request_.frame)
+            QTimer::singleShot(kSettleMs, this, &ScreenshotJob::capture);
+    });
+    connect(window_.frameLoader(), &FrameLoader::loadFailed, this,
+            [this](int frame, const QString& message) {
+                if (frame == request_.frame)
+                    fail(message);
+            });
+    // The cache lists its frames on the loader thread; ask for the frame once it has.
+    connect(&window_, &MainWindow::cachedFramesChanged, this, &ScreenshotJob::showRequestedFrame);
+}
+
+bool ScreenshotJob::open() {
+    if (!request_.scenePath.isEmpty()) {
+        if (!window_.openScene(request_.scenePath)) {
+            fail(tr("cannot open scene %1").arg(request_.scenePath));
+            return false;
+        }
+        if (!request_.cacheDir.isEmpty())
+            window_.useCacheFolder(request_.cacheDir);
+        return true;
+    }
+    if (request_.cacheDir.isEmpty()) {
+        fail(tr("give --scene, --cache or both"));
+        return false;
+    }
+    if (!window_.openCacheFolder(request_.cacheDir)) {
+        fail(tr("cannot open cache %1").arg(request_.cacheDir));
+        return false;
+    }
+    return true;
+}
+
+void ScreenshotJob::showRequestedFrame() {
+    if (finished_)
+        return;
+    const std::vector<int> cached = window_.frameLoader()->cachedFrames();
+    if (std::find(cached.begin(), cached.end(), request_.frame) == cached.end()) {
+        fail(tr("frame %1 is not in the cache %2")
+                 .arg(request_.frame)
+                 .arg(window_.cacheDirectory()));
+        return;
+    }
+    window_.showFrame(request_.frame);
+}
+
+void ScreenshotJob::capture() {
+    if (finished_)
+        return;
+    const QImage image =
+        request_.wholeWindow ? window_.grab().toImage() : window_.viewport()->grabFramebuffer();
+    if (image.isNull() || !image.save(request_.outputPath, "PNG")) {
+        fail(tr("cannot write %1").arg(request_.outputPath));
+        return;
+    }
+    finished_ = true;
+    timeout_->stop();
+    Q_EMIT done(QString());
+}
+
+void ScreenshotJob::fail(const QString& error) {
+    if (finished_)
+        return;
+    finished_ = true;
+    timeout_->stop();
+    Q_EMIT done(error);
+}
+
+} // namespace airtrap

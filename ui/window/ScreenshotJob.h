@@ -1,0 +1,49 @@
+#pragma once
+// `airtrap --screenshot out.png`: open a scene (and its cache), show one frame, save the viewport
+// (or the whole editor) as a PNG, and report — for the docs and for tests that look at pixels.
+#include <QObject>
+#include <QSize>
+#include <QString>
+
+class QTimer;
+
+namespace airtrap {
+
+class MainWindow;
+
+struct ScreenshotRequest {
+    QString scenePath;  //!< empty: the scene comes from the cache's manifest
+    QString cacheDir;   //!< empty: the folder next to the scene
+    int frame = 0;      //!< 0: no cached frame, the scene in edit mode
+    QString outputPath; //!< PNG
+    QSize size{1280, 720};
+    bool wholeWindow = false; //!< the editor window instead of the viewport alone
+};
+
+class ScreenshotJob : public QObject {
+    Q_OBJECT
+
+public:
+    //! Takes over `window` (sets it non-interactive) until done.
+    ScreenshotJob(MainWindow& window, ScreenshotRequest request, QObject* parent = nullptr);
+
+    //! Opens, shows and waits for the frame; done() follows.
+    void start();
+
+Q_SIGNALS:
+    //! `error` is empty on success, else what went wrong (file, frame, reason).
+    void done(const QString& error);
+
+private:
+    bool open();
+    void showRequestedFrame();
+    void capture();
+    void fail(const QString& error);
+
+    MainWindow& window_;
+    ScreenshotRequest request_;
+    QTimer* timeout_;
+    bool finished_ = false;
+};
+
+} // namespace airtrap

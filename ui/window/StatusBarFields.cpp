@@ -1,0 +1,65 @@
+#include "window/StatusBarFields.h"
+
+#include "cache/FrameFile.h"
+#include "sim/Baker.h"
+
+#include <QLabel>
+#include <QLocale>
+#include <QStatusBar>
+#include <cmath>
+
+namespace airtrap {
+
+StatusBarFields::StatusBarFields(QStatusBar* statusBar) : QObject(statusBar) {
+    frame_ = addField(statusBar, "frameField", tr("Frame shown in the viewport"));
+    time_ = addField(statusBar, "timeField", tr("Simulated time of that frame"));
+    particles_ = addField(statusBar, "particlesField", tr("Water particles in that frame"));
+    step_ = addField(statusBar, "stepField", tr("Wall time per simulation step of the bake"));
+    eta_ = addField(statusBar, "etaField", tr("Estimated time until the bake finishes"));
+}
+
+QLabel* StatusBarFields::addField(QStatusBar* statusBar, const char* objectName,
+                                  const QString& toolTip) {
+    auto* field = new QLabel(statusBar);
+    field->setObjectName(QLatin1String(objectName));
+    field->setToolTip(toolTip);
+    field->setMinimumWidth(90);
+    statusBar->addPermanentWidget(field);
+    return field;
+}
+
+void StatusBarFields::showFrame(int frame, const FrameData& data) {
+    frame_->setText(tr("Frame %1").arg(frame));
+    time_->setText(tr("t = %1 s").arg(data.state.time, 0, 'f', 3));
+    particles_->setText(
+        tr("%1 particles").arg(QLocale().toString(qulonglong(data.state.fluid.size()))));
+}
+
+void StatusBarFields::showFrameNumber(int frame, double fps) {
+    frame_->setText(tr("Frame %1").arg(frame));
+    time_->setText(tr("t = %1 s").arg((frame - 1) / fps, 0, 'f', 3));
+    particles_->clear();
+}
+
+void StatusBarFields::showBakeProgress(const BakeProgress& progress) {
+    if (progress.stepsPerSecond > 0.0)
+        step_->setText(tr("%1 ms/step").arg(1000.0 / progress.stepsPerSecond, 0, 'f', 1));
+    eta_->setText(progress.etaSeconds >= 0.0 ? tr("ETA %1").arg(duration(progress.etaSeconds))
+                                             : tr("ETA …"));
+}
+
+void StatusBarFields::clearBake() {
+    step_->clear();
+    eta_->clear();
+}
+
+QString StatusBarFields::duration(double seconds) {
+    const long long whole = std::llround(seconds);
+    if (whole < 60)
+        return tr("%1 s").arg(whole);
+    if (whole < 3600)
+        return tr("%1 min %2 s").arg(whole / 60).arg(whole % 60);
+    return tr("%1 h %2 min").arg(whole / 3600).arg((whole % 3600) / 60);
+}
+
+} // namespace airtrap
