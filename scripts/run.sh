@@ -13,6 +13,10 @@ bash scripts/deps.sh
 # Build only the program about to run: quicker, and it does not wait on the test suite.
 if [[ -n "${DISPLAY:-}" || -n "${WAYLAND_DISPLAY:-}" ]]; then
     bash scripts/build.sh airtrap
+    # With no arguments the dam-break sample opens, so there is something to look at and bake.
+    if [[ $# -eq 0 ]]; then
+        set -- samples/dam_break.json
+    fi
     exec build/bin/airtrap "$@"
 fi
 

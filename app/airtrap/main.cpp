@@ -9,6 +9,7 @@
 #include <QIcon>
 #include <QRegularExpression>
 #include <QSurfaceFormat>
+#include <QTimer>
 #include <cstdio>
 #include <cstdlib>
 
@@ -97,7 +98,8 @@ int takeScreenshot(airtrap::MainWindow& window, const airtrap::ScreenshotRequest
         }
         QApplication::exit(exitCode);
     });
-    job.start();
+    // Started from the event loop: a job that fails at once must find a loop to exit.
+    QTimer::singleShot(0, &job, &airtrap::ScreenshotJob::start);
     return QApplication::exec() == 0 ? exitCode : 1;
 }
 

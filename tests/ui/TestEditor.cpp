@@ -1,6 +1,7 @@
 // The editor as an artist uses it: open every sample, edit and undo, save and reopen, bake a few
 // frames on the background thread while the timeline fills, scrub, and answer the question about
 // frames baked with old settings.
+#include "BakeTestScenes.h"
 #include "cache/FrameCache.h"
 #include "controller/SimulationController.h"
 #include "document/SceneDocument.h"
@@ -10,6 +11,7 @@
 #include "timeline/FrameLoader.h"
 #include "timeline/TimelineWidget.h"
 #include "window/EditorActions.h"
+#include "window/LogPanel.h"
 #include "window/MainWindow.h"
 
 #include <QAbstractButton>
@@ -39,10 +41,9 @@ QString sceneText(const Scene& scene) {
     return QString::fromStdString(sceneToJson(scene).dump());
 }
 
-//! A dam break small enough to bake a few frames in seconds.
+//! The shared tiny dam break, with a few more frames to discard and re-bake.
 Scene tinyDamBreak() {
-    Scene scene = readSceneFile(samplePath(QStringLiteral("dam_break.json")).toStdString());
-    scene.solver.particleSpacing = 0.05;
+    Scene scene = test::tinyDamBreak();
     scene.frames.endFrame = 6;
     return scene;
 }
@@ -166,6 +167,30 @@ private Q_SLOTS:
         window.showFrame(3);
         QTRY_VERIFY_WITH_TIMEOUT(!shown.isEmpty(), 10000);
         QCOMPARE(shown.last().first().toInt(), 3);
+    }
+
+    void anEngineErrorIsShownWithTheEnginesMessage() {
+        QTemporaryDir folder;
+        const QString blocker = folder.filePath(QStringLiteral("file"));
+        QFile file(blocker);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.close();
+        const QString scenePath = folder.filePath(QStringLiteral("tiny.json"));
+        writeSceneFile(tinyDamBreak(), scenePath.toStdString());
+        MainWindow window;
+        window.show();
+        QVERIFY(window.openScene(scenePath));
+        // A cache folder that cannot exist: its parent is a regular file.
+        window.useCacheFolder(blocker + QStringLiteral("/tiny.cache"));
+        answerNextMessageBox(QMessageBox::Ok);
+        QSignalSpy failed(window.controller(), &SimulationController::failed);
+        window.actions().bake->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(!failed.isEmpty(), 20000);
+        const QString message = failed.first().first().toString();
+        QVERIFY2(message.contains(blocker), qPrintable(message));
+        QVERIFY(window.log()->toPlainText().contains(message));
+        QTRY_VERIFY(!window.controller()->isBusy());
+        QVERIFY(window.actions().bake->isEnabled());
     }
 
     void editingAfterABakeOffersToDiscardLaterFrames() {

@@ -392,6 +392,7 @@ bool MainWindow::chooseAndSaveAs() {
 }
 
 void MainWindow::showError(const QString& title, const QString& message) {
+    lastError_ = message;
     log_->error(message);
     statusBar()->showMessage(message.section(QLatin1Char('\n'), 0, 0), 10000);
     if (interactive_)

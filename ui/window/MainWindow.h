@@ -59,6 +59,8 @@ public:
     //! When false, questions (unsaved changes, discarding frames) take their default answer
     //! without a dialog and errors go to the log only: for tests and the screenshot mode.
     void setInteractive(bool interactive);
+    //! The message of the last error shown (dialog or log), for callers without a dialog.
+    QString lastError() const { return lastError_; }
 
 public Q_SLOTS:
     //! Opens a scene (after offering to save unsaved changes) and its cache when one exists.
@@ -131,6 +133,7 @@ private:
     //! Set by openCacheFolder(): bake and view this folder instead of the one next to the file.
     QString openedCacheDir_;
     bool interactive_ = true;
+    QString lastError_;
 };
 
 } // namespace airtrap

@@ -6,6 +6,7 @@
 
 #include <QImage>
 #include <QTimer>
+#include <algorithm>
 
 namespace airtrap {
 
@@ -20,11 +21,23 @@ ScreenshotJob::ScreenshotJob(MainWindow& window, ScreenshotRequest request, QObj
     : QObject(parent), window_(window), request_(std::move(request)), timeout_(new QTimer(this)) {
     timeout_->setSingleShot(true);
     connect(timeout_, &QTimer::timeout, this,
-            [this] { fail(tr("timed out waiting for frame %1").arg(request_.frame)); });
+            [this] { fail(tr("timed out waiting for frame %1").arg(frameToShow_)); });
 }
 
 void ScreenshotJob::start() {
     window_.setInteractive(false);
+    // Connected before anything opens: showing the window may run queued events, and the cache
+    // listing must not slip past unheard.
+    connect(&window_, &MainWindow::frameShown, this, [this](int frame) {
+        if (frame == frameToShow_)
+            QTimer::singleShot(kSettleMs, this, &ScreenshotJob::capture);
+    });
+    connect(window_.frameLoader(), &FrameLoader::loadFailed, this,
+            [this](int frame, const QString& message) {
+                if (frame == frameToShow_)
+                    fail(message);
+            });
+    connect(&window_, &MainWindow::cachedFramesChanged, this, &ScreenshotJob::showRequestedFrame);
     if (!open())
         return;
     if (request_.wholeWindow)
@@ -33,27 +46,12 @@ void ScreenshotJob::start() {
         window_.viewport()->setFixedSize(request_.size);
     window_.show();
     timeout_->start(kTimeoutMs);
-    if (request_.frame <= 0) {
-        QTimer::singleShot(kSettleMs, this, &ScreenshotJob::capture);
-        return;
-    }
-    connect(&window_, &MainWindow::frameShown, this, [this](int frame) {
-        if (frame == request_.frame)
-            QTimer::singleShot(kSettleMs, this, &ScreenshotJob::capture);
-    });
-    connect(window_.frameLoader(), &FrameLoader::loadFailed, this,
-            [this](int frame, const QString& message) {
-                if (frame == request_.frame)
-                    fail(message);
-            });
-    // The cache lists its frames on the loader thread; ask for the frame once it has.
-    connect(&window_, &MainWindow::cachedFramesChanged, this, &ScreenshotJob::showRequestedFrame);
 }
 
 bool ScreenshotJob::open() {
     if (!request_.scenePath.isEmpty()) {
         if (!window_.openScene(request_.scenePath)) {
-            fail(tr("cannot open scene %1").arg(request_.scenePath));
+            fail(window_.lastError());
             return false;
         }
         if (!request_.cacheDir.isEmpty())
@@ -65,23 +63,33 @@ bool ScreenshotJob::open() {
         return false;
     }
     if (!window_.openCacheFolder(request_.cacheDir)) {
-        fail(tr("cannot open cache %1").arg(request_.cacheDir));
+        fail(window_.lastError());
         return false;
     }
     return true;
 }
 
 void ScreenshotJob::showRequestedFrame() {
-    if (finished_)
+    if (finished_ || frameToShow_ > 0)
         return;
     const std::vector<int> cached = window_.frameLoader()->cachedFrames();
-    if (std::find(cached.begin(), cached.end(), request_.frame) == cached.end()) {
+    if (request_.frame <= 0) {
+        // No frame asked for: what the editor shows on opening — frame 1 when it is cached, the
+        // scene in edit mode when nothing is.
+        if (cached.empty() || cached.front() != 1) {
+            QTimer::singleShot(kSettleMs, this, &ScreenshotJob::capture);
+            return;
+        }
+        frameToShow_ = 1;
+    } else if (std::find(cached.begin(), cached.end(), request_.frame) == cached.end()) {
         fail(tr("frame %1 is not in the cache %2")
                  .arg(request_.frame)
                  .arg(window_.cacheDirectory()));
         return;
+    } else {
+        frameToShow_ = request_.frame;
     }
-    window_.showFrame(request_.frame);
+    window_.showFrame(frameToShow_);
 }
 
 void ScreenshotJob::capture() {

@@ -14,7 +14,7 @@ class MainWindow;
 struct ScreenshotRequest {
     QString scenePath;  //!< empty: the scene comes from the cache's manifest
     QString cacheDir;   //!< empty: the folder next to the scene
-    int frame = 0;      //!< 0: no cached frame, the scene in edit mode
+    int frame = 0;      //!< 0: frame 1 when cached, else the scene in edit mode
     QString outputPath; //!< PNG
     QSize size{1280, 720};
     bool wholeWindow = false; //!< the editor window instead of the viewport alone
@@ -44,6 +44,8 @@ private:
     ScreenshotRequest request_;
     QTimer* timeout_;
     bool finished_ = false;
+    //! The frame being loaded for the picture (0 until the cache listing arrived).
+    int frameToShow_ = 0;
 };
 
 } // namespace airtrap

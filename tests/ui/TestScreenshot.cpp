@@ -1,0 +1,128 @@
+// `airtrap --screenshot`: the real editor binary renders a cached dam-break frame to a PNG and
+// exits; the picture shows water where the water is, and bad requests fail with a reason.
+#include "BakeTestScenes.h"
+
+#include <QImage>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QTest>
+
+namespace airtrap {
+
+namespace {
+
+struct Run {
+    int exitCode = -1;
+    QString err;
+};
+
+Run runEditor(const QStringList& arguments) {
+    QProcess process;
+    process.start(QStringLiteral(AIRTRAP_BINARY_DIR "/bin/airtrap"), arguments);
+    Run run;
+    if (!process.waitForStarted(10000) || !process.waitForFinished(120000)) {
+        process.kill();
+        process.waitForFinished();
+        run.err = QStringLiteral("did not finish: ") + process.errorString();
+        return run;
+    }
+    run.err = QString::fromUtf8(process.readAllStandardError());
+    if (process.exitStatus() == QProcess::NormalExit)
+        run.exitCode = process.exitCode();
+    return run;
+}
+
+//! Water is drawn blue to white by speed over a dark grey background.
+bool isWaterColoured(const QColor& colour) {
+    return colour.blue() > 150 && colour.blue() > colour.red() + 40;
+}
+
+int waterPixels(const QImage& image) {
+    int count = 0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x)
+            count += isWaterColoured(image.pixelColor(x, y)) ? 1 : 0;
+    return count;
+}
+
+} // namespace
+
+class TestScreenshot : public QObject {
+    Q_OBJECT
+
+    QTemporaryDir folder_;
+    QString scenePath_;
+    QString cacheDir_;
+
+private Q_SLOTS:
+    void initTestCase() {
+        QVERIFY(folder_.isValid());
+        scenePath_ = folder_.filePath(QStringLiteral("tiny.json"));
+        cacheDir_ = folder_.filePath(QStringLiteral("tiny.cache"));
+        const Scene scene = test::tinyDamBreak();
+        writeSceneFile(scene, scenePath_.toStdString());
+        test::bakeNow(scene, cacheDir_);
+    }
+
+    void rendersACachedFrame() {
+        const QString png = folder_.filePath(QStringLiteral("frame3.png"));
+        const Run run = runEditor({QStringLiteral("--scene"), scenePath_, QStringLiteral("--frame"),
+                                   QStringLiteral("3"), QStringLiteral("--screenshot"), png,
+                                   QStringLiteral("--size"), QStringLiteral("480x320")});
+        QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+        const QImage image(png);
+        QCOMPARE(image.size(), QSize(480, 320));
+        // The water column fills a visible share of the picture, and most of it is background.
+        const int water = waterPixels(image);
+        QVERIFY2(water > image.width() * image.height() / 100, qPrintable(QString::number(water)));
+        QVERIFY2(water < image.width() * image.height() / 2, qPrintable(QString::number(water)));
+    }
+
+    void editModeHasNoParticles() {
+        // A scene with no cache beside it opens in edit mode.
+        const QString uncached = folder_.filePath(QStringLiteral("uncached.json"));
+        QVERIFY(QFile::copy(scenePath_, uncached));
+        const QString png = folder_.filePath(QStringLiteral("edit.png"));
+        const Run run = runEditor({uncached, QStringLiteral("--screenshot"), png,
+                                   QStringLiteral("--size"), QStringLiteral("480x320")});
+        QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+        const QImage image(png);
+        QVERIFY(!image.isNull());
+        // Only the fluid block's blue outline: a thin line, not a filled column.
+        QVERIFY(waterPixels(image) < image.width() * image.height() / 100);
+    }
+
+    void wholeWindowOnRequest() {
+        const QString png = folder_.filePath(QStringLiteral("window.png"));
+        const Run run = runEditor({QStringLiteral("--cache"), cacheDir_, QStringLiteral("--frame"),
+                                   QStringLiteral("2"), QStringLiteral("--screenshot"), png,
+                                   QStringLiteral("--size"), QStringLiteral("1200x800"),
+                                   QStringLiteral("--window")});
+        QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+        QCOMPARE(QImage(png).size(), QSize(1200, 800));
+    }
+
+    void refusesBadRequests() {
+        const QString png = folder_.filePath(QStringLiteral("bad.png"));
+        Run run = runEditor({QStringLiteral("--scene"), scenePath_, QStringLiteral("--frame"),
+                             QStringLiteral("99"), QStringLiteral("--screenshot"), png});
+        QCOMPARE(run.exitCode, 1);
+        QVERIFY2(run.err.contains(QStringLiteral("frame 99")), qPrintable(run.err));
+        QVERIFY(!QFile::exists(png));
+
+        run = runEditor({QStringLiteral("--scene"), scenePath_, QStringLiteral("--screenshot"), png,
+                         QStringLiteral("--size"), QStringLiteral("big")});
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY2(run.err.contains(QStringLiteral("--size big")), qPrintable(run.err));
+
+        run = runEditor({QStringLiteral("--scene"), folder_.filePath(QStringLiteral("none.json")),
+                         QStringLiteral("--screenshot"), png});
+        QCOMPARE(run.exitCode, 1);
+        QVERIFY2(run.err.contains(QStringLiteral("none.json")), qPrintable(run.err));
+    }
+};
+
+} // namespace airtrap
+
+QTEST_GUILESS_MAIN(airtrap::TestScreenshot)
+#include "TestScreenshot.moc"
