@@ -26,6 +26,7 @@
 #include <QFileInfo>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QShowEvent>
 #include <QStatusBar>
 #include <QToolBar>
 #include <QUndoStack>
@@ -103,6 +104,24 @@ void MainWindow::createDocks() {
     addDock(timeline_, tr("Timeline"), "timelineDock", Qt::BottomDockWidgetArea);
     QDockWidget* logDock = addDock(log_, tr("Log"), "logDock", Qt::BottomDockWidgetArea);
     splitDockWidget(findChild<QDockWidget*>(QStringLiteral("timelineDock")), logDock, Qt::Vertical);
+}
+
+void MainWindow::applyDefaultDockSizes() {
+    // Sizes only take once the window has its own: called on the first show.
+    resizeDocks({findChild<QDockWidget*>(QStringLiteral("timelineDock")),
+                 findChild<QDockWidget*>(QStringLiteral("logDock"))},
+                {80, 110}, Qt::Vertical);
+    resizeDocks({findChild<QDockWidget*>(QStringLiteral("sceneDock")),
+                 findChild<QDockWidget*>(QStringLiteral("parametersDock"))},
+                {250, 460}, Qt::Horizontal);
+}
+
+void MainWindow::showEvent(QShowEvent* event) {
+    QMainWindow::showEvent(event);
+    if (useDefaultDockSizes_) {
+        useDefaultDockSizes_ = false;
+        applyDefaultDockSizes();
+    }
 }
 
 void MainWindow::createMenus() {
@@ -448,7 +467,8 @@ void MainWindow::restoreSettings() {
     const QByteArray geometry = settings.value(kGeometryKey).toByteArray();
     if (geometry.isEmpty() || !restoreGeometry(geometry))
         resize(1440, 900);
-    restoreState(settings.value(kStateKey).toByteArray());
+    // First run: no saved layout, so the docks get proportions chosen for the editor.
+    useDefaultDockSizes_ = !restoreState(settings.value(kStateKey).toByteArray());
 }
 
 void MainWindow::saveSettings() const {

@@ -9,6 +9,7 @@
 #include <memory>
 
 class QCloseEvent;
+class QShowEvent;
 class QDockWidget;
 class QMenu;
 class QAction;
@@ -86,10 +87,12 @@ Q_SIGNALS:
 
 protected:
     void closeEvent(QCloseEvent* event) override;
+    void showEvent(QShowEvent* event) override;
 
 private:
     void createParts();
     void createDocks();
+    void applyDefaultDockSizes();
     QDockWidget* addDock(QWidget* content, const QString& title, const char* objectName,
                          Qt::DockWidgetArea area);
     void createMenus();
@@ -133,6 +136,7 @@ private:
     //! Set by openCacheFolder(): bake and view this folder instead of the one next to the file.
     QString openedCacheDir_;
     bool interactive_ = true;
+    bool useDefaultDockSizes_ = false;
     QString lastError_;
 };
 
