@@ -28,6 +28,7 @@
 #include <QMessageBox>
 #include <QShowEvent>
 #include <QStatusBar>
+#include <QStyle>
 #include <QToolBar>
 #include <QUndoStack>
 #include <QUndoView>
@@ -143,9 +144,11 @@ void MainWindow::createMenus() {
     QAction* undo = document_->undoStack()->createUndoAction(this, tr("&Undo"));
     undo->setShortcut(QKeySequence::Undo);
     undo->setObjectName(QStringLiteral("undoAction"));
+    undo->setIcon(style()->standardIcon(QStyle::SP_ArrowBack));
     QAction* redo = document_->undoStack()->createRedoAction(this, tr("&Redo"));
     redo->setShortcut(QKeySequence::Redo);
     redo->setObjectName(QStringLiteral("redoAction"));
+    redo->setIcon(style()->standardIcon(QStyle::SP_ArrowForward));
     edit->addAction(undo);
     edit->addAction(redo);
     edit->addSeparator();
@@ -179,6 +182,9 @@ void MainWindow::createToolbar() {
     QToolBar* bar = addToolBar(tr("Main"));
     bar->setObjectName(QStringLiteral("mainToolbar"));
     bar->addActions({actions_->newScene, actions_->openScene, actions_->saveScene});
+    bar->addSeparator();
+    bar->addAction(findChild<QAction*>(QStringLiteral("undoAction")));
+    bar->addAction(findChild<QAction*>(QStringLiteral("redoAction")));
     bar->addSeparator();
     bar->addActions({actions_->bake, actions_->pause, actions_->resume, actions_->stop});
     bar->addSeparator();
