@@ -25,6 +25,8 @@ constexpr std::size_t kChunkHeaderSize = 12; // 4-byte tag + u64 length
 constexpr char kStateTag[] = "STAT";
 constexpr char kStatsTag[] = "FSTA";
 constexpr char kAttributeTag[] = "PATT";
+constexpr char kBodyTag[] = "BODY";
+constexpr std::size_t kBodyRecordSize = 13 * sizeof(double); // X, q (w, x, y, z), V, ω
 
 [[noreturn]] void corrupt(const std::string& path, const std::string& what) {
     throw Error(ErrorKind::CacheCorrupt, path + ": " + what);
@@ -76,6 +78,29 @@ void writeAttributeChunk(ByteWriter& out, const ParticleAttribute& attribute, st
     out.u8(static_cast<std::uint8_t>(attribute.type));
     out.u64(count);
     out.raw(attribute.data, count * attributeElementSize(attribute.type));
+    endChunk(out, at);
+}
+
+void writeVec3(ByteWriter& out, const Vec3d& v) {
+    out.f64(v.x());
+    out.f64(v.y());
+    out.f64(v.z());
+}
+
+//! Written only when there are bodies, so frames of body-free scenes stay byte-identical to
+//! those written before the chunk existed.
+void writeBodyChunk(ByteWriter& out, const std::vector<RigidBodyState>& bodies) {
+    const std::size_t at = beginChunk(out, kBodyTag);
+    out.u32(static_cast<std::uint32_t>(bodies.size()));
+    for (const RigidBodyState& body : bodies) {
+        writeVec3(out, body.position);
+        out.f64(body.orientation.w()); // w first, as `info --json` prints it
+        out.f64(body.orientation.x());
+        out.f64(body.orientation.y());
+        out.f64(body.orientation.z());
+        writeVec3(out, body.linearVelocity);
+        writeVec3(out, body.angularVelocity);
+    }
     endChunk(out, at);
 }
 
@@ -223,6 +248,38 @@ void readStatsChunk(const Chunk& chunk, FrameStats& stats, const std::string& pa
     }
 }
 
+Vec3d readVec3(ByteReader& in) {
+    const double x = in.f64();
+    const double y = in.f64();
+    return {x, y, in.f64()}; // named reads: argument evaluation order is unspecified
+}
+
+RigidBodyState readBody(ByteReader& in) {
+    RigidBodyState body;
+    body.position = readVec3(in);
+    const double w = in.f64();
+    const Vec3d xyz = readVec3(in);
+    body.orientation = Quatd(w, xyz.x(), xyz.y(), xyz.z());
+    body.linearVelocity = readVec3(in);
+    body.angularVelocity = readVec3(in);
+    return body;
+}
+
+//! Unlike STAT, the body has no room for appended fields: its size is checked exactly, so a
+//! damaged count is caught. Per-body fields of a later version go in a chunk of their own.
+void readBodyChunk(const Chunk& chunk, std::vector<RigidBodyState>& bodies,
+                   const std::string& path) {
+    ByteReader in(chunk.data, chunk.size, path + ": chunk BODY");
+    const std::uint32_t count = in.u32();
+    const std::uint64_t expected = sizeof(std::uint32_t) + std::uint64_t(count) * kBodyRecordSize;
+    if (chunk.size != expected)
+        corrupt(path, "chunk BODY is " + std::to_string(chunk.size) + " bytes, expected " +
+                          std::to_string(expected) + " for " + std::to_string(count) + " bodies");
+    bodies.reserve(count);
+    for (std::uint32_t i = 0; i < count; ++i)
+        bodies.push_back(readBody(in));
+}
+
 void readAttributeChunk(const Chunk& chunk, std::map<std::string, AttributeChunk>& attributes,
                         const std::string& path) {
     ByteReader in(chunk.data, chunk.size, path + ": chunk PATT");
@@ -276,6 +333,7 @@ void readChunks(const std::vector<Chunk>& chunks, FrameData& frame, const std::s
     std::uint64_t particleCount = 0;
     int stateChunks = 0;
     int statsChunks = 0;
+    int bodyChunks = 0;
     for (const Chunk& chunk : chunks) {
         if (chunk.tag == kStateTag) {
             particleCount = readStateChunk(chunk, frame.state, path);
@@ -285,6 +343,10 @@ void readChunks(const std::vector<Chunk>& chunks, FrameData& frame, const std::s
             ++statsChunks;
         } else if (chunk.tag == kAttributeTag) {
             readAttributeChunk(chunk, attributes, path);
+        } else if (chunk.tag == kBodyTag) {
+            if (++bodyChunks > 1)
+                corrupt(path, "more than one BODY chunk");
+            readBodyChunk(chunk, frame.state.bodies, path);
         }
     }
     if (stateChunks != 1 || statsChunks != 1)
@@ -314,7 +376,7 @@ std::vector<std::uint8_t> encodeFrame(const SimulationState& state, const FrameS
     // attributes() only hands out pointers; it is non-const because writers use the same views.
     auto& fluid = const_cast<ParticleSet&>(state.fluid);
     const std::vector<ParticleAttribute> attributes = fluid.attributes();
-    std::size_t estimate = kFrameHeaderSize + 1024;
+    std::size_t estimate = kFrameHeaderSize + 1024 + state.bodies.size() * kBodyRecordSize;
     for (const ParticleAttribute& attribute : attributes)
         estimate += kChunkHeaderSize + 64 + fluid.size() * attributeElementSize(attribute.type);
     std::vector<std::uint8_t> bytes(kFrameHeaderSize); // header filled once the payload is known
@@ -324,6 +386,8 @@ std::vector<std::uint8_t> encodeFrame(const SimulationState& state, const FrameS
     writeStatsChunk(out, stats);
     for (const ParticleAttribute& attribute : attributes)
         writeAttributeChunk(out, attribute, fluid.size());
+    if (!state.bodies.empty())
+        writeBodyChunk(out, state.bodies);
     writeHeader(bytes, state.frame);
     return bytes;
 }

@@ -25,7 +25,8 @@ inline constexpr std::uint32_t kFrameFormatVersion = 1;
 //! Bytes of the fixed header that precedes the chunk payload.
 inline constexpr std::uint32_t kFrameHeaderSize = 32;
 
-//! Serialises a frame: header + STAT, FSTA and one PATT chunk per ParticleSet attribute.
+//! Serialises a frame: header + STAT, FSTA, one PATT chunk per ParticleSet attribute, and BODY
+//! when the state has rigid bodies.
 std::vector<std::uint8_t> encodeFrame(const SimulationState& state, const FrameStats& stats);
 
 //! Parses and verifies a frame (magic, version, sizes, checksums, attribute counts). Throws

@@ -1,8 +1,10 @@
 #pragma once
 // Everything needed to continue a bake bit-for-bit: the cache stores exactly this per frame.
+#include "rigid/RigidBodyState.h"
 #include "sph/ParticleSet.h"
 
 #include <cstdint>
+#include <vector>
 
 namespace airtrap {
 
@@ -14,6 +16,9 @@ struct SimulationState {
     double lastMaxAcceleration = 0.0; //!< m/s², feeds the next Δt (force criterion)
     std::uint32_t nextParticleId = 0;
     ParticleSet fluid;
+    //! Pose and velocities of every rigid body, in the scene's body order; empty when the scene
+    //! has none (and in frames written before bodies were cached).
+    std::vector<RigidBodyState> bodies;
 
     bool operator==(const SimulationState& other) const = default;
 };

@@ -3,6 +3,7 @@
 #include "unit/CacheTestData.h"
 
 #include <QtTest/QtTest>
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -26,6 +27,58 @@ void resealFrame(std::vector<std::uint8_t>& bytes) {
     put<std::uint64_t>(bytes, 16, payload);
     put<std::uint32_t>(bytes, 24, computeCrc32(bytes.data() + kFrameHeaderSize, payload));
     put<std::uint32_t>(bytes, 28, computeCrc32(bytes.data(), 28));
+}
+
+//! Three bodies whose values exercise every bit pattern the BODY chunk must keep.
+std::vector<RigidBodyState> threeBodies() {
+    std::vector<RigidBodyState> bodies(3);
+    bodies[0].position = Vec3d(1.5, -0.0, 2.25);
+    bodies[1].position = Vec3d(0.1, 0.2, 0.3);
+    bodies[1].orientation = Quatd(Eigen::AngleAxisd(0.7, Vec3d(1, 2, 3).normalized()));
+    bodies[1].linearVelocity = Vec3d(-1e-300, std::numeric_limits<double>::denorm_min(), 3.0);
+    bodies[1].angularVelocity = Vec3d(0.0, 12.5, -7.0 / 3.0);
+    bodies[2].orientation = Quatd(-0.5, 0.5, -0.5, 0.5);
+    bodies[2].angularVelocity = Vec3d(std::numeric_limits<double>::max(), 1.0 / 3.0, -0.0);
+    return bodies;
+}
+
+//! A hand-written state and stats (no random distributions, whose output differs between
+//! standard libraries) for the golden-bytes test.
+SimulationState fixedState() {
+    SimulationState state;
+    state.frame = 3;
+    state.time = 0.125;
+    state.steps = 77;
+    state.lastTimeStep = 1e-4;
+    state.lastMaxAcceleration = 9.81;
+    state.nextParticleId = 3;
+    for (int i = 0; i < 3; ++i)
+        state.fluid.push(Vec3f(0.1f * i, 0.2f, -0.3f * i), Vec3f(1.0f, -float(i), 0.5f),
+                         1000.0f + i, std::uint32_t(i));
+    return state;
+}
+
+FrameStats fixedStats() {
+    FrameStats stats;
+    stats.wallSeconds = 0.5;
+    stats.stepsInFrame = 12;
+    stats.maxSpeed = 2.5;
+    stats.meanDensity = 1001.0;
+    stats.phaseSeconds = {{"forces", 0.25}, {"neighbours", 0.125}};
+    return stats;
+}
+
+//! Offset of the last chunk's header, walking the chunk list from the payload start.
+std::size_t lastChunkOffset(const std::vector<std::uint8_t>& bytes) {
+    std::size_t at = kFrameHeaderSize;
+    std::size_t last = at;
+    while (at < bytes.size()) {
+        last = at;
+        std::uint64_t length = 0;
+        std::memcpy(&length, bytes.data() + at + 4, 8);
+        at += 12 + length;
+    }
+    return last;
 }
 
 QString corruptMessage(const std::vector<std::uint8_t>& bytes) {
@@ -148,6 +201,99 @@ private Q_SLOTS:
         put<std::uint64_t>(bytes, bytes.size() - 8 - length, length);
         resealFrame(bytes);
         QVERIFY(decodeFrame(bytes, kPath).state == state);
+    }
+
+    void bodiesRoundTripIsExact() {
+        SimulationState state = randomState(5, 30, 8);
+        state.bodies = threeBodies();
+        const FrameStats stats = randomStats(5);
+        const std::vector<std::uint8_t> bytes = encodeFrame(state, stats);
+        const FrameData decoded = decodeFrame(bytes, kPath);
+        QVERIFY(decoded.state == state);
+        QCOMPARE(decoded.state.bodies.size(), std::size_t(3));
+        QVERIFY(std::signbit(decoded.state.bodies[0].position.y()));
+        QVERIFY(std::signbit(decoded.state.bodies[2].angularVelocity.z()));
+        QCOMPARE(decoded.state.bodies[2].orientation.w(), -0.5); // stored w first, not negated
+        QVERIFY(encodeFrame(decoded.state, decoded.stats) == bytes);
+    }
+
+    void bodyChunkLayoutIsDocumented() {
+        SimulationState state = randomState(5, 2, 8);
+        state.bodies = threeBodies();
+        const std::vector<std::uint8_t> bytes = encodeFrame(state, FrameStats{});
+        const std::size_t at = lastChunkOffset(bytes);
+        QCOMPARE(std::memcmp(bytes.data() + at, "BODY", 4), 0);
+        std::uint64_t length = 0;
+        std::uint32_t count = 0;
+        std::memcpy(&length, bytes.data() + at + 4, 8);
+        std::memcpy(&count, bytes.data() + at + 12, 4);
+        QCOMPARE(count, 3u);
+        QCOMPARE(length, std::uint64_t(4 + 3 * 13 * 8));
+        // Body 1: X (3 f64), then q as w, x, y, z, then V, then ω.
+        double record[13];
+        std::memcpy(record, bytes.data() + at + 16 + 13 * 8, sizeof record);
+        const RigidBodyState& body = state.bodies[1];
+        QCOMPARE(record[2], body.position.z());
+        QCOMPARE(record[3], body.orientation.w());
+        QCOMPARE(record[6], body.orientation.z());
+        QCOMPARE(record[7], body.linearVelocity.x());
+        QCOMPARE(record[12], body.angularVelocity.z());
+    }
+
+    void corruptBodyChunkDetected() {
+        SimulationState state = randomState(7, 4, 4);
+        state.bodies = threeBodies();
+        const std::vector<std::uint8_t> good = encodeFrame(state, randomStats(4));
+        const std::size_t at = lastChunkOffset(good);
+        // One double short: the count says 3 bodies, the body holds 2 and a bit.
+        std::vector<std::uint8_t> bytes(good.begin(), good.end() - 8);
+        put<std::uint64_t>(bytes, at + 4, 4 + 3 * 13 * 8 - 8);
+        resealFrame(bytes);
+        QString message = corruptMessage(bytes);
+        QVERIFY2(message.startsWith(QString::fromStdString(kPath)), qPrintable(message));
+        QVERIFY2(message.contains("chunk BODY is 308 bytes, expected 316 for 3 bodies"),
+                 qPrintable(message));
+        // A count that does not match the records.
+        bytes = good;
+        put<std::uint32_t>(bytes, at + 12, 4);
+        resealFrame(bytes);
+        message = corruptMessage(bytes);
+        QVERIFY2(message.contains("expected 420 for 4 bodies"), qPrintable(message));
+        // Too short to hold even the count.
+        bytes.assign(good.begin(), good.begin() + static_cast<std::ptrdiff_t>(at + 12 + 2));
+        put<std::uint64_t>(bytes, at + 4, 2);
+        resealFrame(bytes);
+        message = corruptMessage(bytes);
+        QVERIFY2(message.startsWith(QString::fromStdString(kPath) + ": chunk BODY"),
+                 qPrintable(message));
+    }
+
+    void duplicateBodyChunkDetected() {
+        SimulationState state = randomState(7, 4, 4);
+        state.bodies = threeBodies();
+        std::vector<std::uint8_t> bytes = encodeFrame(state, FrameStats{});
+        const std::vector<std::uint8_t> chunk(
+            bytes.begin() + static_cast<std::ptrdiff_t>(lastChunkOffset(bytes)), bytes.end());
+        bytes.insert(bytes.end(), chunk.begin(), chunk.end());
+        resealFrame(bytes);
+        QVERIFY2(corruptMessage(bytes).contains("more than one BODY chunk"),
+                 qPrintable(corruptMessage(bytes)));
+    }
+
+    void frameWithoutBodiesIsUnchanged() {
+        // Size and CRC-32 of this frame as encoded before the BODY chunk existed: frames of scenes
+        // without bodies, and caches written by older builds, stay byte-identical.
+        const std::vector<std::uint8_t> bytes = encodeFrame(fixedState(), fixedStats());
+        QCOMPARE(bytes.size(), std::size_t(401));
+        QCOMPARE(computeCrc32(bytes.data(), bytes.size()), 0xC4EC37B4u);
+        QVERIFY(decodeFrame(bytes, kPath).state.bodies.empty());
+        // With bodies, the same chunks come first and BODY is appended after them.
+        SimulationState withBodies = fixedState();
+        withBodies.bodies = threeBodies();
+        const std::vector<std::uint8_t> longer = encodeFrame(withBodies, fixedStats());
+        QCOMPARE(longer.size(), bytes.size() + 12 + 4 + 3 * 13 * 8);
+        QVERIFY(std::equal(bytes.begin() + kFrameHeaderSize, bytes.end(),
+                           longer.begin() + kFrameHeaderSize));
     }
 
     void headerLayoutIsDocumented() {

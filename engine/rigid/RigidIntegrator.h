@@ -1,0 +1,39 @@
+#pragma once
+// Time integration of a dynamic rigid body (DESIGN §4, METHOD-NOTES §1 step 5). The solver
+// accumulates the force and torque on the body (fluid force, contact impulses / Δt, drag) and
+// calls step() once per sub-step; static and kinematic bodies are not integrated here.
+#include "rigid/RigidBodyInertia.h"
+#include "rigid/RigidBodyState.h"
+
+namespace airtrap {
+
+class RigidIntegrator {
+public:
+    //! Advances a dynamic body by `dt` (s) under `force` (N, world, through the centre of mass),
+    //! `torque` (N·m, world, about the centre of mass) and `gravity` (m/s²). Does nothing for an
+    //! infinite-mass body.
+    //!
+    //! Linear motion: semi-implicit (symplectic) Euler, V ← V + Δt (F/M + g), X ← X + Δt V.
+    //! Angular motion, in the body frame where I is constant: the torque as a kick,
+    //! ω ← ω + Δt I⁻¹ τ, then the torque-free Euler equations by gyroscopicStep(); the
+    //! orientation turns by the exponential map of the step's mean ω (advanceOrientation()).
+    static void step(RigidBodyState& state, const RigidBodyInertia& inertia, const Vec3d& force,
+                     const Vec3d& torque, const Vec3d& gravity, double dt);
+
+    //! q ← exp(ω Δt) q, renormalised: the exact rotation for ω constant over the step
+    //! (RotationVector), so the orientation neither drifts off unit length (as q + ½Δt ω q does)
+    //! nor lags at large ω Δt.
+    static Quatd advanceOrientation(const Quatd& orientation, const Vec3d& angularVelocity,
+                                    double dt);
+
+    //! Torque-free Euler equations in the body frame, I ω̇ = (I ω) × ω, over `dt` by the
+    //! implicit midpoint rule, solved by Newton's method. Exposed for the tests.
+    static Vec3d gyroscopicStep(const Mat3d& inertiaBody, const Vec3d& omegaBody, double dt);
+
+private:
+    //! The angular half of step(): ω and orientation.
+    static void rotate(RigidBodyState& state, const RigidBodyInertia& inertia, const Vec3d& torque,
+                       double dt);
+};
+
+} // namespace airtrap
