@@ -4,12 +4,15 @@
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
+#include <QEventLoop>
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
+#include <QTimer>
 #include <QWindow>
 #include <algorithm>
 #include <chrono>
+#include <stdexcept>
 #include <vector>
 
 namespace airtrap::bench {
@@ -17,6 +20,10 @@ namespace airtrap::bench {
 namespace {
 
 constexpr int kExposeTimeoutMs = 10000;
+//! Longest a frame may take to reach the screen before the benchmark gives up on it.
+constexpr int kFrameTimeoutMs = 60000;
+//! Longer than the 5 ms by which Qt on xcb paces update requests, short enough not to add up.
+constexpr int kSettleMs = 10;
 //! Pixels the cursor moves per measured frame: 0.8° of orbit, enough that no frame repeats.
 constexpr int kDragPixelsPerFrame = 2;
 
@@ -33,6 +40,7 @@ double median(std::vector<double> values) {
 
 ViewportDrawBenchmark::ViewportDrawBenchmark(const QSize& size)
     : viewport_(std::make_unique<ViewportWidget>()) {
+    QObject::connect(viewport_.get(), &QOpenGLWidget::frameSwapped, [this] { ++framesSwapped_; });
     viewport_->resize(size);
     viewport_->show();
     if (!waitUntilPainted()) {
@@ -67,7 +75,7 @@ bool ViewportDrawBenchmark::waitUntilPainted() {
     QElapsedTimer timer;
     timer.start();
     while (timer.elapsed() < kExposeTimeoutMs) {
-        QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
+        settle();
         const QWindow* window = viewport_->windowHandle();
         if (window && window->isExposed() && viewport_->isValid()) {
             return true;
@@ -82,12 +90,32 @@ void ViewportDrawBenchmark::finishGl() {
     viewport_->doneCurrent();
 }
 
-double ViewportDrawBenchmark::timedRepaint() {
+void ViewportDrawBenchmark::settle() {
+    QEventLoop loop;
+    QTimer::singleShot(kSettleMs, &loop, &QEventLoop::quit);
+    loop.exec();
+}
+
+double ViewportDrawBenchmark::timedFrame(const std::function<void()>& change) {
+    settle();
+    finishGl(); // nothing of earlier frames may still be running when the clock starts
+    const int swappedBefore = framesSwapped_;
     using Clock = std::chrono::steady_clock;
     const Clock::time_point start = Clock::now();
-    // repaint() paints and composites to the window before returning; glFinish then waits for
-    // the rasteriser, which would otherwise still be busy with the frame when the clock stops.
+    change();
+    // repaint() usually paints and composites before it returns, but Qt may defer it to the
+    // window's next update request (seen with small windows): the frame is waited for, so that a
+    // deferred paint never counts as an instant one.
     viewport_->repaint();
+    QElapsedTimer timeout;
+    timeout.start();
+    while (framesSwapped_ == swappedBefore) {
+        if (timeout.elapsed() > kFrameTimeoutMs) {
+            throw std::runtime_error("the viewport did not put a frame on screen");
+        }
+        QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents);
+    }
+    // The swap may return before a threaded rasteriser (llvmpipe) is done with the frame.
     finishGl();
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
@@ -126,36 +154,25 @@ ViewportDrawResult ViewportDrawBenchmark::run(const Scene& scene,
     viewport_->frameAll(); // every particle count starts from the same view
 
     // The first upload at a new size allocates the buffer; later frames of a playback reuse it,
-    // so that one is not measured. Events are handled between runs, outside the clock, so that
-    // paints the widget posted for itself do not land inside a measurement.
-    viewport_->setFrame(frame);
-    timedRepaint();
+    // so that one is not measured. setFrame() recomputes the speeds and marks the buffer for
+    // upload, which the next paint does.
+    timedFrame([&] { viewport_->setFrame(frame); });
     std::vector<double> uploadTimes;
     for (int i = 0; i < uploads; ++i) {
-        QCoreApplication::processEvents();
-        finishGl();
-        using Clock = std::chrono::steady_clock;
-        const Clock::time_point start = Clock::now();
-        viewport_->setFrame(frame); // recomputes the speeds and marks the buffer for upload
-        viewport_->repaint();
-        finishGl();
-        uploadTimes.push_back(
-            std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+        uploadTimes.push_back(timedFrame([&] { viewport_->setFrame(frame); }));
     }
     result.uploadMilliseconds = median(uploadTimes);
 
     std::vector<double> drawTimes;
     pressMouse();
     for (int i = 0; i < warmupFrames + frames; ++i) {
-        QCoreApplication::processEvents();
-        dragBy(kDragPixelsPerFrame);
-        const double ms = timedRepaint();
+        const double ms = timedFrame([&] { dragBy(kDragPixelsPerFrame); });
         if (i >= warmupFrames) {
             drawTimes.push_back(ms);
         }
     }
     releaseMouse();
-    QCoreApplication::processEvents();
+    settle();
     result.drawMilliseconds = median(drawTimes);
     result.framesPerSecond = result.drawMilliseconds > 0.0 ? 1000.0 / result.drawMilliseconds : 0.0;
     return result;

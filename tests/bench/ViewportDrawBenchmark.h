@@ -8,6 +8,7 @@
 
 #include <QSize>
 #include <QString>
+#include <functional>
 #include <memory>
 
 namespace airtrap {
@@ -48,8 +49,12 @@ public:
 private:
     //! Waits (handling events) until the widget is on screen and has painted once.
     bool waitUntilPainted();
-    //! Repaints now and waits until the GPU has finished; returns the elapsed milliseconds.
-    double timedRepaint();
+    //! Handles events for a moment, outside any measurement, so that paints the widget asked for
+    //! itself (update()) and Qt's pacing of window flushes are over before a clock starts.
+    void settle();
+    //! Settles, then makes `change`, repaints and waits until the frame is on screen and the GPU
+    //! has finished; returns the milliseconds from the change to that.
+    double timedFrame(const std::function<void()>& change);
     //! Ends the work queued on the viewport's context.
     void finishGl();
     //! A left-button drag step of `pixels` to the right: orbits the camera as a user would.
@@ -61,6 +66,7 @@ private:
     QString openGlProblem_;
     QString renderer_;
     int dragX_ = 0;
+    int framesSwapped_ = 0; //!< frames the viewport has put on screen so far
 };
 
 } // namespace bench

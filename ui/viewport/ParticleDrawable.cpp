@@ -7,6 +7,7 @@
 #include <QOpenGLContext>
 #include <QOpenGLExtraFunctions>
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 namespace airtrap {
@@ -119,12 +120,29 @@ void ParticleDrawable::upload() {
     buffer_.write(0, positions.data(), positionBytes);
     buffer_.write(positionBytes, speeds_.data(), speedBytes);
     gl->glEnableVertexAttribArray(0);
-    gl->glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(Vec3f), nullptr);
     gl->glEnableVertexAttribArray(1);
-    gl->glVertexAttribPointer(1, 1, GL_FLOAT, GL_FALSE, sizeof(float),
-                              reinterpret_cast<const void*>(std::intptr_t(positionBytes)));
     buffer_.release();
     uploadedCount_ = int(positions.size());
+    boundStride_ = 0; // attributes point into the old buffer layout until bound again
+}
+
+void ParticleDrawable::bindAttributes(int stride) {
+    // The particles are stored cell by cell, so every k-th one samples the whole volume evenly;
+    // a prefix of the buffer would show only part of the water.
+    QOpenGLExtraFunctions* gl = QOpenGLContext::currentContext()->extraFunctions();
+    const std::intptr_t speedsOffset = std::intptr_t(uploadedCount_) * std::intptr_t(sizeof(Vec3f));
+    buffer_.bind();
+    gl->glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, GLsizei(stride * sizeof(Vec3f)), nullptr);
+    gl->glVertexAttribPointer(1, 1, GL_FLOAT, GL_FALSE, GLsizei(stride * sizeof(float)),
+                              reinterpret_cast<const void*>(speedsOffset));
+    buffer_.release();
+    boundStride_ = stride;
+}
+
+int ParticleDrawable::drawStride() const {
+    if (!moving_ || movingBudget_ <= 0 || uploadedCount_ <= movingBudget_)
+        return 1;
+    return (uploadedCount_ + movingBudget_ - 1) / movingBudget_;
 }
 
 void ParticleDrawable::draw(const RenderContext& context) {
@@ -143,11 +161,15 @@ void ParticleDrawable::draw(const RenderContext& context) {
     program_->bind();
     program_->setUniformValue("view", context.view);
     program_->setUniformValue("projection", context.projection);
-    program_->setUniformValue("radius", radius_);
+    const int stride = drawStride();
+    // Fewer, larger spheres fill about the same volume: the radius grows with the cube root.
+    program_->setUniformValue("radius", radius_ * std::cbrt(float(stride)));
     program_->setUniformValue("viewportHeight", float(context.framebufferSize.height()));
     program_->setUniformValue("speedScale", effectiveSpeedScale());
     QOpenGLVertexArrayObject::Binder binder(&vertexArray_);
-    gl.glDrawArrays(GL_POINTS, 0, uploadedCount_);
+    if (stride != boundStride_)
+        bindAttributes(stride);
+    gl.glDrawArrays(GL_POINTS, 0, (uploadedCount_ + stride - 1) / stride);
     program_->release();
     gl.glDisable(GL_PROGRAM_POINT_SIZE);
 }

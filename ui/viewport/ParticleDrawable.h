@@ -33,6 +33,14 @@ public:
     float maxSpeed() const { return maxSpeed_; }
     //! Particles of the current frame.
     int particleCount() const { return count_; }
+    //! While the camera moves, frames with more particles than `budget` draw every k-th one
+    //! (k = count / budget, rounded up) with spheres k^(1/3) times larger, so the water keeps
+    //! its look and the view keeps up with the mouse on slow (software) OpenGL. 0 disables it.
+    void setMovingBudget(int budget) { movingBudget_ = budget; }
+    //! Whether the camera is moving (the reduced drawing applies).
+    void setMoving(bool moving) { moving_ = moving; }
+    //! Every how many particles one is drawn in the next paint (1 = all).
+    int drawStride() const;
 
     //! Builds the sprite shader and the buffer.
     void initialize() override;
@@ -43,6 +51,8 @@ public:
 
 private:
     void upload();
+    //! Points the vertex attributes at every `stride`-th particle of the buffer.
+    void bindAttributes(int stride);
 
     std::unique_ptr<QOpenGLShaderProgram> program_;
     QOpenGLBuffer buffer_;
@@ -55,6 +65,9 @@ private:
     float radius_ = 0.01f;
     float speedScale_ = 0.0f;
     float maxSpeed_ = 0.0f;
+    int movingBudget_ = 0;
+    bool moving_ = false;
+    int boundStride_ = 1;
 };
 
 } // namespace airtrap

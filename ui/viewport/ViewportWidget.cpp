@@ -17,6 +17,12 @@ namespace {
 
 constexpr float kOrbitDegreesPerPixel = 0.4f;
 constexpr float kZoomPerWheelStep = 0.85f; // distance factor of one notch towards the scene
+// While the camera moves, at most this many particles are drawn (a spread subset): about what
+// software OpenGL on two cores draws at 10+ frames per second at 1280×720
+// (docs/PERFORMANCE.md, airtrap-viewport-bench). A GPU draws every frame in full either way.
+constexpr int kMovingParticleBudget = 60000;
+// The full frame returns when the camera has not moved for this long.
+constexpr int kCameraSettleMs = 200;
 constexpr float kAxesShareOfDomain = 0.2f;
 constexpr float kMinAxesLength = 0.2f; // m
 
@@ -27,6 +33,13 @@ ViewportWidget::ViewportWidget(QWidget* parent) : QOpenGLWidget(parent) {
     setFormat(surfaceFormat());
     setMinimumSize(320, 240);
     setFocusPolicy(Qt::StrongFocus); // for F
+    particles_.setMovingBudget(kMovingParticleBudget);
+    cameraSettled_.setSingleShot(true);
+    cameraSettled_.setInterval(kCameraSettleMs);
+    connect(&cameraSettled_, &QTimer::timeout, this, [this] {
+        particles_.setMoving(false);
+        update();
+    });
 }
 
 ViewportWidget::~ViewportWidget() {
@@ -220,6 +233,8 @@ void ViewportWidget::paintLegend() {
 
 void ViewportWidget::cameraMovedByUser() {
     refitOnResize_ = false;
+    particles_.setMoving(true);
+    cameraSettled_.start();
     update();
 }
 

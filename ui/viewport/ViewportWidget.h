@@ -19,6 +19,7 @@
 #include <QColor>
 #include <QOpenGLWidget>
 #include <QSurfaceFormat>
+#include <QTimer>
 #include <array>
 #include <memory>
 #include <optional>
@@ -128,6 +129,8 @@ private:
     bool showGizmos_ = true;
     //! Until the user navigates, a resize refits the view (the first fit may predate the layout).
     bool refitOnResize_ = false;
+    //! Fires once the camera has rested a moment: the full frame is drawn again.
+    QTimer cameraSettled_;
     bool glReady_ = false;
     QMetaObject::Connection contextConnection_;
 };
