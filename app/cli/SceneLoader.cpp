@@ -3,6 +3,7 @@
 #include "scene/SceneJson.h"
 #include "scene/SceneOverride.h"
 #include "scene/SceneValidator.h"
+#include "sim/InflowEmitter.h"
 
 #include <algorithm>
 #include <cmath>
@@ -43,6 +44,12 @@ ParticleEstimate SceneLoader::estimateParticles(const Scene& scene) {
         for (std::size_t j = 0; j < i; ++j)
             if (overlap(blocks[i], blocks[j]))
                 estimate.exact = false;
+    }
+    // The last step of the bake ends at the end frame's time; layers due before it are emitted.
+    const double end = scene.frameTime(scene.frames.endFrame);
+    for (const InflowEmitterSettings& settings : scene.emitters) {
+        const InflowEmitter emitter(settings, dx, scene.solver.restDensity);
+        estimate.emitted += emitter.layersBefore(end) * emitter.particlesPerLayer();
     }
     return estimate;
 }

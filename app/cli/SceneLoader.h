@@ -19,6 +19,8 @@ struct ParticleEstimate {
     std::size_t count = 0;
     //! False when obstacles or overlapping blocks remove lattice points the sum still counts.
     bool exact = true;
+    //! Particles the emitters add by the end frame (exact: emission is a function of time).
+    std::size_t emitted = 0;
 };
 
 class SceneLoader {

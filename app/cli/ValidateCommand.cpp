@@ -4,6 +4,7 @@
 
 #include <iostream>
 #include <sstream>
+#include <string>
 
 namespace airtrap::cli {
 
@@ -24,8 +25,11 @@ ExitCode ValidateCommand::run() {
     std::ostringstream fps;
     fps << loaded.scene.frames.fps;
     std::cout << "OK: " << scenePath_ << " (" << (particles.exact ? "" : "about ")
-              << particles.count << " particles, " << loaded.scene.frames.endFrame << " frames at "
-              << fps.str() << " fps)\n";
+              << particles.count << " particles"
+              << (particles.emitted > 0
+                      ? " + " + std::to_string(particles.emitted) + " emitted by the end frame"
+                      : std::string())
+              << ", " << loaded.scene.frames.endFrame << " frames at " << fps.str() << " fps)\n";
     return ExitCode::Success;
 }
 

@@ -13,16 +13,16 @@ namespace airtrap {
 
 //! WCSPH settings (paper §3.1, DESIGN §4).
 struct SolverSettings {
-    double particleSpacing = 0.02;  //!< m, initial distance between water particles
-    double supportFactor = 2.0;     //!< kernel support radius = supportFactor × spacing
-    double restDensity = 1000.0;    //!< kg/m³, ρ₀
-    double maxSpeed = 10.0;         //!< m/s, u_max; speed of sound c = 10 u_max (paper §3.1)
-    double viscosityAlpha = 0.1;    //!< Monaghan artificial viscosity α
-    double wallViscosity = 0.05;    //!< artificial viscosity coefficient at solid walls (friction)
-    double wallRestitution = 0.0;   //!< ε of the contact impulse against solid walls (eq. 4)
-    double cflFactor = 0.3;         //!< λ in Δt = λ h / (c + |v|max)
-    int shepardInterval = 30;       //!< steps between Shepard density re-initialisations (0 = off)
-    double maxDensityError = 0.2;   //!< stop the bake when |ρ/ρ₀ − 1| exceeds this (blow-up guard)
+    double particleSpacing = 0.02; //!< m, initial distance between water particles
+    double supportFactor = 2.0;    //!< kernel support radius = supportFactor × spacing
+    double restDensity = 1000.0;   //!< kg/m³, ρ₀
+    double maxSpeed = 10.0;        //!< m/s, u_max; speed of sound c = 10 u_max (paper §3.1)
+    double viscosityAlpha = 0.1;   //!< Monaghan artificial viscosity α
+    double wallViscosity = 0.05;   //!< artificial viscosity coefficient at solid walls (friction)
+    double wallRestitution = 0.0;  //!< ε of the contact impulse against solid walls (eq. 4)
+    double cflFactor = 0.3;        //!< λ in Δt = λ h / (c + |v|max)
+    int shepardInterval = 30;      //!< steps between Shepard density re-initialisations (0 = off)
+    double maxDensityError = 0.2; //!< stop the bake when |ρ/ρ₀ − 1| exceeds this (blow-up guard)
     Vec3d gravity = Vec3d(0.0, -9.81, 0.0); //!< m/s²
 };
 
@@ -56,6 +56,23 @@ struct BoxObstacle {
     Vec3d size = Vec3d(0.2, 0.5, 0.2);
 };
 
+//! An inflow nozzle ("pouring water"): from `start_time` to `stop_time` it emits layers of
+//! particles on the spacing lattice, one layer each time the jet has moved on by one spacing, at
+//! `speed` along `direction`, until `max_particles` would be exceeded.
+struct InflowEmitterSettings {
+    std::string name = "Inflow";
+    std::string shape = "disc";              //!< "disc" (radius) or "rectangle" (width × height)
+    Vec3d position = Vec3d(0.5, 0.8, 0.5);   //!< m, centre of the nozzle's exit plane
+    Vec3d direction = Vec3d(0.0, -1.0, 0.0); //!< of the jet; normalised when used
+    double radius = 0.05;                    //!< m, of a disc nozzle
+    double width = 0.1;     //!< m, rectangle side along the horizontal perpendicular of direction
+    double height = 0.1;    //!< m, rectangle side along the other perpendicular
+    double speed = 1.0;     //!< m/s, of the emitted water
+    double startTime = 0.0; //!< s
+    double stopTime = 1.0;  //!< s; nothing is emitted from this time on
+    int maxParticles = 100000; //!< budget; only whole layers are emitted
+};
+
 struct Scene {
     static constexpr int kFormatVersion = 1;
 
@@ -66,6 +83,7 @@ struct Scene {
     ContainerSettings container;
     std::vector<FluidBlock> fluidBlocks;
     std::vector<BoxObstacle> obstacles;
+    std::vector<InflowEmitterSettings> emitters;
 
     //! Where the scene was read from (not saved); used in messages.
     std::string sourcePath;

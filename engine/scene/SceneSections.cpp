@@ -41,6 +41,7 @@ using FramesAccess = ObjectAccess<&Scene::frames>;
 using ContainerAccess = ObjectAccess<&Scene::container>;
 using FluidBlockAccess = ElementAccess<&Scene::fluidBlocks>;
 using ObstacleAccess = ElementAccess<&Scene::obstacles>;
+using EmitterAccess = ElementAccess<&Scene::emitters>;
 
 // --- Conversion between a field and a ParameterValue. ---------------------------------------
 
@@ -105,22 +106,23 @@ void assign(std::string& field, const ParameterValue& value, const std::string& 
     field = asHeld<std::string>(value, key);
 }
 
-//! The kind follows from the field's type, so a declaration cannot disagree with its field.
+//! The kind follows from the field's type, so a declaration cannot disagree with its field; a
+//! string field with declared choices is a Choice.
 template <class Field>
-ParameterKind kindOf() {
-    if constexpr (std::is_same_v<Field, double>)
+ParameterKind kindOf(const ParameterDeclaration& declaration) {
+    if constexpr (std::is_same_v<Field, std::string>)
+        return declaration.choices.empty() ? ParameterKind::String : ParameterKind::Choice;
+    else if constexpr (std::is_same_v<Field, double>)
         return ParameterKind::Real;
     else if constexpr (std::is_same_v<Field, Vec3d>)
         return ParameterKind::Vector3;
-    else if constexpr (std::is_same_v<Field, std::string>)
-        return ParameterKind::String;
     else
         return ParameterKind::Int;
 }
 
 template <class Access, class Owner, class Field>
 BoundParameter bind(ParameterDeclaration declaration, Field Owner::*member) {
-    declaration.kind = kindOf<Field>();
+    declaration.kind = kindOf<Field>(declaration);
     const std::string key = declaration.key;
     return {std::move(declaration),
             [member](const Scene& scene, std::size_t element) {
@@ -425,6 +427,104 @@ SchemaSection obstaclesSection() {
                               &BoxObstacle::size)});
 }
 
+SchemaSection emittersSection() {
+    return arraySection<&Scene::emitters>(
+        "emitters", "Emitters", "Emitter",
+        "Inflow nozzles (pouring water): each emits layers of particles on the spacing lattice "
+        "from its start time to its stop time, within its particle budget.",
+        {bind<EmitterAccess>({.key = "name",
+                              .label = "Name",
+                              .minimum = 1,
+                              .maximum = kMaxNameLength,
+                              .defaultValue = std::string("Inflow"),
+                              .help = "Shown in the scene tree and in messages."},
+                             &InflowEmitterSettings::name),
+         bind<EmitterAccess>({.key = "shape",
+                              .label = "Shape",
+                              .defaultValue = std::string("disc"),
+                              .help = "Nozzle cross-section: a disc (radius) or a rectangle "
+                                      "(width × height).",
+                              .choices = {"disc", "rectangle"}},
+                             &InflowEmitterSettings::shape),
+         bind<EmitterAccess>({.key = "position",
+                              .label = "Position",
+                              .unit = "m",
+                              .minimum = -kMaxCoordinate,
+                              .maximum = kMaxCoordinate,
+                              .defaultValue = Vec3d(0.5, 0.8, 0.5),
+                              .help = "Centre of the nozzle's exit plane."},
+                             &InflowEmitterSettings::position),
+         bind<EmitterAccess>({.key = "direction",
+                              .label = "Direction",
+                              .minimum = -1000.0,
+                              .maximum = 1000.0,
+                              .defaultValue = Vec3d(0.0, -1.0, 0.0),
+                              .help = "Direction of the jet; any length but zero."},
+                             &InflowEmitterSettings::direction),
+         bind<EmitterAccess>({.key = "radius",
+                              .label = "Radius",
+                              .unit = "m",
+                              .minimum = 0.0,
+                              .maximum = 100.0,
+                              .minimumExclusive = true,
+                              .defaultValue = 0.05,
+                              .help = "Radius of a disc nozzle."},
+                             &InflowEmitterSettings::radius),
+         bind<EmitterAccess>({.key = "width",
+                              .label = "Width",
+                              .unit = "m",
+                              .minimum = 0.0,
+                              .maximum = 100.0,
+                              .minimumExclusive = true,
+                              .defaultValue = 0.1,
+                              .help = "Side of a rectangular nozzle along the horizontal "
+                                      "perpendicular of the direction (x for a vertical jet)."},
+                             &InflowEmitterSettings::width),
+         bind<EmitterAccess>({.key = "height",
+                              .label = "Height",
+                              .unit = "m",
+                              .minimum = 0.0,
+                              .maximum = 100.0,
+                              .minimumExclusive = true,
+                              .defaultValue = 0.1,
+                              .help = "Side of a rectangular nozzle along the other "
+                                      "perpendicular (z for a vertical jet)."},
+                             &InflowEmitterSettings::height),
+         bind<EmitterAccess>({.key = "speed",
+                              .label = "Speed",
+                              .unit = "m/s",
+                              .minimum = 0.0,
+                              .maximum = 200.0,
+                              .minimumExclusive = true,
+                              .defaultValue = 1.0,
+                              .help = "Speed of the emitted water; at most solver.max_speed."},
+                             &InflowEmitterSettings::speed),
+         bind<EmitterAccess>({.key = "start_time",
+                              .label = "Start time",
+                              .unit = "s",
+                              .minimum = 0.0,
+                              .maximum = 100000.0,
+                              .defaultValue = 0.0,
+                              .help = "Simulated time of the first layer."},
+                             &InflowEmitterSettings::startTime),
+         bind<EmitterAccess>({.key = "stop_time",
+                              .label = "Stop time",
+                              .unit = "s",
+                              .minimum = 0.0,
+                              .maximum = 100000.0,
+                              .defaultValue = 1.0,
+                              .help = "Nothing is emitted from this simulated time on."},
+                             &InflowEmitterSettings::stopTime),
+         bind<EmitterAccess>({.key = "max_particles",
+                              .label = "Particle budget",
+                              .minimum = 1,
+                              .maximum = 20000000,
+                              .defaultValue = 100000LL,
+                              .help = "Most particles this emitter creates; it stops at the last "
+                                      "whole layer that fits."},
+                             &InflowEmitterSettings::maxParticles)});
+}
+
 } // namespace
 
 std::vector<SchemaSection> buildSceneSections() {
@@ -435,6 +535,7 @@ std::vector<SchemaSection> buildSceneSections() {
     sections.push_back(containerSection());
     sections.push_back(fluidBlocksSection());
     sections.push_back(obstaclesSection());
+    sections.push_back(emittersSection());
     return sections;
 }
 

@@ -3,6 +3,7 @@
 #include "core/Error.h"
 #include "scene/ParameterCodec.h"
 #include "scene/SceneSchema.h"
+#include "sim/InflowEmitter.h"
 
 #include <algorithm>
 #include <cmath>
@@ -50,6 +51,7 @@ public:
         checkFluidBlocks(containerValid);
         if (containerValid)
             checkObstacles();
+        checkEmitters(containerValid);
         checkParticleCount();
         checkOverlaps();
         return issues_;
@@ -131,21 +133,68 @@ private:
                         "domain (container plus headroom)");
     }
 
+    //! The half-extents along x, y and z of a nozzle's exit plane.
+    static Vec3d nozzleHalfExtent(const InflowEmitterSettings& emitter) {
+        Vec3d widthAxis, heightAxis;
+        InflowEmitter::nozzleFrame(emitter.direction, widthAxis, heightAxis);
+        if (emitter.shape == "rectangle")
+            return 0.5 *
+                   (emitter.width * widthAxis.cwiseAbs() + emitter.height * heightAxis.cwiseAbs());
+        // A disc of radius r spans r·sqrt(1 − d_a²) along axis a.
+        const Vec3d d = emitter.direction.normalized();
+        return emitter.radius * (Vec3d::Ones() - d.cwiseProduct(d)).cwiseMax(0.0).cwiseSqrt();
+    }
+
+    void checkEmitters(bool containerValid) {
+        const SolverSettings& solver = scene_.solver;
+        for (std::size_t i = 0; i < scene_.emitters.size(); ++i) {
+            const InflowEmitterSettings& emitter = scene_.emitters[i];
+            const std::string label = blockLabel("emitters", i, emitter.name);
+            if (emitter.stopTime <= emitter.startTime)
+                error(label + ": stop_time = " + number(emitter.stopTime) +
+                      " s must be later than start_time = " + number(emitter.startTime) + " s");
+            if (emitter.speed > solver.maxSpeed + kTolerance)
+                error(label + ": speed = " + number(emitter.speed) +
+                      " m/s exceeds solver.max_speed = " + number(solver.maxSpeed) +
+                      " m/s; the speed of sound (10 × max_speed) would be too slow for the jet. "
+                      "Raise solver.max_speed or lower the speed");
+            if (emitter.direction.norm() < kTolerance) {
+                error(label + ": direction is zero; give the jet a direction, e.g. [0, -1, 0]");
+                continue;
+            }
+            if (containerValid) {
+                const Vec3d half = nozzleHalfExtent(emitter);
+                checkInside(label + "'s nozzle", {emitter.position - half, emitter.position + half},
+                            scene_.domain(), "domain (container plus headroom)");
+            }
+            const InflowEmitter nozzle(emitter, solver.particleSpacing, solver.restDensity);
+            if (nozzle.layerBudget() == 0)
+                warning(label + ": max_particles = " + std::to_string(emitter.maxParticles) +
+                        " is less than one layer of " + std::to_string(nozzle.particlesPerLayer()) +
+                        " particles; it emits nothing");
+        }
+    }
+
     void checkParticleCount() {
         const double spacing = scene_.solver.particleSpacing;
         double volume = 0.0;
         for (const FluidBlock& block : scene_.fluidBlocks)
             volume += (block.max - block.min).cwiseMax(0.0).prod();
-        const double particles = volume / (spacing * spacing * spacing);
+        double budgets = 0.0;
+        for (const InflowEmitterSettings& emitter : scene_.emitters)
+            budgets += emitter.maxParticles;
+        const double particles = volume / (spacing * spacing * spacing) + budgets;
         if (particles <= SceneValidator::kMaxParticles)
             return;
         char text[256];
         std::snprintf(text, sizeof text,
-                      "the fluid blocks hold about %.1f million particles at "
+                      "the fluid blocks%s hold about %.1f million particles at "
                       "solver.particle_spacing = %s m; the limit is %.0f million. Use a spacing of "
                       "at least %.2g m or smaller fluid blocks",
-                      particles / 1e6, number(spacing).c_str(), SceneValidator::kMaxParticles / 1e6,
-                      std::cbrt(volume / SceneValidator::kMaxParticles) * 1.005);
+                      budgets > 0.0 ? " and emitter budgets" : "", particles / 1e6,
+                      number(spacing).c_str(), SceneValidator::kMaxParticles / 1e6,
+                      std::cbrt(volume / std::max(1.0, SceneValidator::kMaxParticles - budgets)) *
+                          1.005);
         error(text);
     }
 
@@ -184,10 +233,16 @@ std::vector<std::string> SceneValidator::ruleDescriptions() {
         "There is at least one fluid block; each has `min` below `max` on every axis and lies "
         "inside the domain: the container plus `headroom` above its rim.",
         "Every obstacle lies inside the domain: the container plus `headroom` above its rim.",
-        "The fluid blocks hold at most " + number(kMaxParticles / 1e6) +
-            " million particles (their total volume / `particle_spacing`³).",
+        "Every emitter has a non-zero `direction`, `stop_time` later than `start_time`, `speed` "
+        "at most `solver.max_speed` (the speed of sound is 10 × `max_speed`), and its nozzle "
+        "(the disc or rectangle across the direction) lies inside the domain.",
+        "The fluid blocks and the emitters' `max_particles` together hold at most " +
+            number(kMaxParticles / 1e6) +
+            " million particles (the blocks' total volume / `particle_spacing`³ plus the "
+            "budgets).",
         "Warnings, which do not stop a bake: fluid blocks that overlap each other or an "
-        "obstacle, and fluid blocks thinner than `particle_spacing`.",
+        "obstacle, fluid blocks thinner than `particle_spacing`, and emitters whose "
+        "`max_particles` is less than one layer of their nozzle.",
     };
 }
 

@@ -60,6 +60,8 @@ Simulation::Simulation(Scene scene, SimulationState resumeFrom)
     : scene_(std::move(scene)), state_(std::move(resumeFrom)),
       solver_(std::make_unique<WcsphSolver>(scene_.solver, scene_.domain(),
                                             SceneSetup::buildBodies(scene_))) {
+    for (const InflowEmitterSettings& settings : scene_.emitters)
+        emitters_.emplace_back(settings, scene_.solver.particleSpacing, scene_.solver.restDensity);
     lastFrameStats_ = measure(state_.fluid);
 }
 
@@ -83,8 +85,13 @@ Simulation::Advance Simulation::advanceFrame(Interrupter& interrupter, const Ste
     while (state_.time < target) {
         const double remaining = target - state_.time;
         const StepReport report = solver_->step(state_, remaining);
+        const double stepStart = state_.time;
         // The last step lands on the frame time exactly, not on an accumulated sum.
         state_.time = report.timeStep == remaining ? target : state_.time + report.timeStep;
+        // After the step, so that the cached frame holds the particles due by its time and a
+        // resumed bake starts from the same set. Growth is not loss: `lost` counts only the
+        // particles the solver removed at the domain's walls.
+        emitInflow(stepStart, state_.time);
         lost += report.removedParticles;
         ++steps;
         checkHealth(report, remaining, nextFrame, lost, particlesAtStart);
@@ -108,8 +115,15 @@ Simulation::Advance Simulation::advanceFrame(Interrupter& interrupter, const Ste
 
 StepReport Simulation::step(double maxTimeStep) {
     const StepReport report = solver_->step(state_, maxTimeStep);
+    const double stepStart = state_.time;
     state_.time += report.timeStep;
+    emitInflow(stepStart, state_.time);
     return report;
+}
+
+void Simulation::emitInflow(double from, double to) {
+    for (const InflowEmitter& emitter : emitters_)
+        emitter.emit(from, to, state_);
 }
 
 void Simulation::checkHealth(const StepReport& report, double timeToFrameEnd, int frame,

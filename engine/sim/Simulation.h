@@ -3,10 +3,12 @@
 #include "core/Interrupter.h"
 #include "scene/Scene.h"
 #include "sim/FrameStats.h"
+#include "sim/InflowEmitter.h"
 #include "sim/SimulationState.h"
 
 #include <functional>
 #include <memory>
+#include <vector>
 
 namespace airtrap {
 
@@ -50,11 +52,14 @@ private:
     //! Throws Error(SimulationBlowUp) naming the frame and the likely cause.
     void checkHealth(const StepReport& report, double timeToFrameEnd, int frame, std::size_t lost,
                      std::size_t particlesAtStart) const;
+    //! Adds the inflow layers due during the step that just went from `from` to `to`.
+    void emitInflow(double from, double to);
 
     Scene scene_;
     SimulationState state_;
     FrameStats lastFrameStats_;
     std::unique_ptr<WcsphSolver> solver_;
+    std::vector<InflowEmitter> emitters_;
 };
 
 } // namespace airtrap

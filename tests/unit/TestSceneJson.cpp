@@ -47,6 +47,7 @@ private Q_SLOTS:
         QTest::addColumn<QString>("file");
         QTest::newRow("dam_break") << "dam_break.json";
         QTest::newRow("hydrostatic") << "hydrostatic.json";
+        QTest::newRow("pouring") << "pouring.json";
     }
 
     void samplesLoadAndValidate() {

@@ -20,8 +20,8 @@ private Q_SLOTS:
         std::vector<std::string> keys;
         for (const SchemaSection& section : SceneSchema::sections())
             keys.push_back(section.key);
-        const std::vector<std::string> expected{"",          "solver",       "frames",
-                                                "container", "fluid_blocks", "obstacles"};
+        const std::vector<std::string> expected{
+            "", "solver", "frames", "container", "fluid_blocks", "obstacles", "emitters"};
         QCOMPARE(keys, expected);
         QVERIFY(SceneSchema::findSection("fluid_blocks")->isArray);
         QVERIFY(!SceneSchema::findSection("solver")->isArray);
@@ -53,6 +53,7 @@ private Q_SLOTS:
         Scene scene;
         scene.fluidBlocks.resize(1);
         scene.obstacles.resize(1);
+        scene.emitters.resize(1);
         for (const SchemaSection& section : SceneSchema::sections())
             for (const BoundParameter& parameter : section.parameters) {
                 const std::string path = SceneSchema::pathOf(section, 0, parameter.declaration.key);
