@@ -3,7 +3,7 @@
 #include "scene/SceneJson.h"
 #include "scene/SceneOverride.h"
 #include "scene/SceneValidator.h"
-#include "sim/InflowEmitter.h"
+#include "scene/InflowNozzle.h"
 
 #include <algorithm>
 #include <cmath>
@@ -48,8 +48,8 @@ ParticleEstimate SceneLoader::estimateParticles(const Scene& scene) {
     // The last step of the bake ends at the end frame's time; layers due before it are emitted.
     const double end = scene.frameTime(scene.frames.endFrame);
     for (const InflowEmitterSettings& settings : scene.emitters) {
-        const InflowEmitter emitter(settings, dx, scene.solver.restDensity);
-        estimate.emitted += emitter.layersBefore(end) * emitter.particlesPerLayer();
+        const InflowNozzle nozzle(settings, dx);
+        estimate.emitted += nozzle.layersBefore(end) * nozzle.particlesPerLayer();
     }
     return estimate;
 }

@@ -3,7 +3,7 @@
 #include "core/Error.h"
 #include "scene/ParameterCodec.h"
 #include "scene/SceneSchema.h"
-#include "sim/InflowEmitter.h"
+#include "scene/InflowNozzle.h"
 
 #include <algorithm>
 #include <cmath>
@@ -136,7 +136,7 @@ private:
     //! The half-extents along x, y and z of a nozzle's exit plane.
     static Vec3d nozzleHalfExtent(const InflowEmitterSettings& emitter) {
         Vec3d widthAxis, heightAxis;
-        InflowEmitter::nozzleFrame(emitter.direction, widthAxis, heightAxis);
+        InflowNozzle::nozzleFrame(emitter.direction, widthAxis, heightAxis);
         if (emitter.shape == "rectangle")
             return 0.5 *
                    (emitter.width * widthAxis.cwiseAbs() + emitter.height * heightAxis.cwiseAbs());
@@ -167,7 +167,7 @@ private:
                 checkInside(label + "'s nozzle", {emitter.position - half, emitter.position + half},
                             scene_.domain(), "domain (container plus headroom)");
             }
-            const InflowEmitter nozzle(emitter, solver.particleSpacing, solver.restDensity);
+            const InflowNozzle nozzle(emitter, solver.particleSpacing);
             if (nozzle.layerBudget() == 0)
                 warning(label + ": max_particles = " + std::to_string(emitter.maxParticles) +
                         " is less than one layer of " + std::to_string(nozzle.particlesPerLayer()) +
