@@ -25,6 +25,17 @@ void InflowNozzle::nozzleFrame(const Vec3d& direction, Vec3d& widthAxis, Vec3d& 
     heightAxis = d.cross(widthAxis).normalized();
 }
 
+Vec3d InflowNozzle::exitHalfExtent(const InflowEmitterSettings& settings) {
+    Vec3d widthAxis, heightAxis;
+    nozzleFrame(settings.direction, widthAxis, heightAxis);
+    if (settings.shape == "rectangle")
+        return 0.5 *
+               (settings.width * widthAxis.cwiseAbs() + settings.height * heightAxis.cwiseAbs());
+    // A disc of radius r spans r·sqrt(1 − d_a²) along axis a.
+    const Vec3d d = settings.direction.normalized();
+    return settings.radius * (Vec3d::Ones() - d.cwiseProduct(d)).cwiseMax(0.0).cwiseSqrt();
+}
+
 InflowNozzle::InflowNozzle(const InflowEmitterSettings& settings, double spacing)
     : settings_(settings), spacing_(spacing), direction_(settings.direction.normalized()) {
     nozzleFrame(settings.direction, widthAxis_, heightAxis_);

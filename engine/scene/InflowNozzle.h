@@ -35,6 +35,8 @@ public:
     const InflowEmitterSettings& settings() const { return settings_; }
     double spacing() const { return spacing_; }
 
+    //! Half-extents along x, y and z of the nozzle's exit plane (disc or rectangle), m.
+    static Vec3d exitHalfExtent(const InflowEmitterSettings& settings);
     //! The width and height axes for a jet along `direction` (non-zero, any length).
     static void nozzleFrame(const Vec3d& direction, Vec3d& widthAxis, Vec3d& heightAxis);
 

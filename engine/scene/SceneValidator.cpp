@@ -1,9 +1,9 @@
 #include "scene/SceneValidator.h"
 
 #include "core/Error.h"
+#include "scene/InflowNozzle.h"
 #include "scene/ParameterCodec.h"
 #include "scene/SceneSchema.h"
-#include "scene/InflowNozzle.h"
 
 #include <algorithm>
 #include <cmath>
@@ -133,18 +133,6 @@ private:
                         "domain (container plus headroom)");
     }
 
-    //! The half-extents along x, y and z of a nozzle's exit plane.
-    static Vec3d nozzleHalfExtent(const InflowEmitterSettings& emitter) {
-        Vec3d widthAxis, heightAxis;
-        InflowNozzle::nozzleFrame(emitter.direction, widthAxis, heightAxis);
-        if (emitter.shape == "rectangle")
-            return 0.5 *
-                   (emitter.width * widthAxis.cwiseAbs() + emitter.height * heightAxis.cwiseAbs());
-        // A disc of radius r spans r·sqrt(1 − d_a²) along axis a.
-        const Vec3d d = emitter.direction.normalized();
-        return emitter.radius * (Vec3d::Ones() - d.cwiseProduct(d)).cwiseMax(0.0).cwiseSqrt();
-    }
-
     void checkEmitters(bool containerValid) {
         const SolverSettings& solver = scene_.solver;
         for (std::size_t i = 0; i < scene_.emitters.size(); ++i) {
@@ -163,7 +151,7 @@ private:
                 continue;
             }
             if (containerValid) {
-                const Vec3d half = nozzleHalfExtent(emitter);
+                const Vec3d half = InflowNozzle::exitHalfExtent(emitter);
                 checkInside(label + "'s nozzle", {emitter.position - half, emitter.position + half},
                             scene_.domain(), "domain (container plus headroom)");
             }

@@ -210,6 +210,23 @@ private Q_SLOTS:
         QCOMPARE(picked.takeFirst().at(0).value<SceneItem>(), SceneItem::none());
     }
 
+    void clickPicksAnInflowNozzle() {
+        const auto viewport = shownViewport();
+        QVERIFY(viewport);
+        Scene scene = damBreak();
+        InflowEmitterSettings jet;
+        jet.position = Vec3d(1.8, 1.5, 0.2);
+        jet.direction = Vec3d(0.0, -1.0, 0.0);
+        jet.radius = 0.1;
+        scene.emitters.push_back(jet);
+        viewport->setScene(scene);
+        QSignalSpy picked(viewport.get(), &ViewportWidget::itemPicked);
+        QTest::mouseClick(viewport.get(), Qt::LeftButton, {},
+                          project(*viewport, toQt(jet.position)).toPoint());
+        QCOMPARE(picked.count(), 1);
+        QCOMPARE(picked.first().at(0).value<SceneItem>(), SceneItem::elementItem("emitters", 0));
+    }
+
     void dragOrbitsWithoutPicking() {
         const auto viewport = shownViewport();
         QVERIFY(viewport);

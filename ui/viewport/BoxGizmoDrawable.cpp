@@ -7,6 +7,7 @@ namespace {
 const QColor kContainerColour(205, 205, 215);
 const QColor kFluidBlockColour(80, 150, 255);
 const QColor kObstacleColour(165, 165, 165);
+const QColor kEmitterColour(90, 220, 130);
 constexpr float kContainerOpacity = 0.85f;
 constexpr float kHeadroomOpacity = 0.3f;
 constexpr float kBoxWidth = 1.5f;
@@ -62,6 +63,9 @@ void BoxGizmoDrawable::addGizmo(std::vector<LineVertex>& vertices, const GizmoBo
         break;
     case GizmoBox::Kind::Obstacle:
         addBox(vertices, box.min, box.max, selected ? highlightColour() : kObstacleColour, 1.0f);
+        break;
+    case GizmoBox::Kind::Emitter:
+        addBox(vertices, box.min, box.max, selected ? highlightColour() : kEmitterColour, 1.0f);
         break;
     }
 }

@@ -11,6 +11,7 @@ struct GizmoBox {
         Container,  //!< the tank; picked by its edges, since its inside is where the water is
         FluidBlock, //!< a block of water at t = 0; solid for picking
         Obstacle,   //!< a static box; solid for picking
+        Emitter,    //!< the exit of an inflow nozzle, with a little depth along the jet
     };
 
     Kind kind = Kind::Obstacle;

@@ -1,5 +1,7 @@
 #include "viewport/SceneGizmos.h"
 
+#include "scene/InflowNozzle.h"
+
 #include <limits>
 
 namespace airtrap {
@@ -25,6 +27,16 @@ SceneGizmos::SceneGizmos(const Scene& scene) : headroom_(float(scene.container.h
         const Vec3d half = 0.5 * obstacle.size;
         boxes_.push_back({GizmoBox::Kind::Obstacle, SceneItem::elementItem("obstacles", i),
                           toQt(obstacle.center - half), toQt(obstacle.center + half)});
+    }
+    for (std::size_t i = 0; i < scene.emitters.size(); ++i) {
+        const InflowEmitterSettings& emitter = scene.emitters[i];
+        // The exit plane alone would be flat (unpickable, a line seen edge on); a quarter of its
+        // size along the jet gives the gizmo a body that shows which way it points.
+        const Vec3d exit = InflowNozzle::exitHalfExtent(emitter);
+        const Vec3d along = 0.25 * exit.maxCoeff() * emitter.direction.normalized().cwiseAbs();
+        const Vec3d half = exit + along;
+        boxes_.push_back({GizmoBox::Kind::Emitter, SceneItem::elementItem("emitters", i),
+                          toQt(emitter.position - half), toQt(emitter.position + half)});
     }
 }
 
