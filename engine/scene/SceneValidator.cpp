@@ -104,8 +104,9 @@ private:
     }
 
     void checkFluidBlocks(bool containerValid) {
-        if (scene_.fluidBlocks.empty())
-            error("fluid_blocks is empty; a scene needs at least one fluid block");
+        if (scene_.fluidBlocks.empty() && scene_.emitters.empty())
+            error("fluid_blocks is empty and there are no emitters; a scene needs water: at "
+                  "least one fluid block or emitter");
         const double spacing = scene_.solver.particleSpacing;
         for (std::size_t i = 0; i < scene_.fluidBlocks.size(); ++i) {
             const FluidBlock& block = scene_.fluidBlocks[i];
@@ -218,8 +219,9 @@ std::vector<std::string> SceneValidator::ruleDescriptions() {
     return {
         "Every value lies in its declared range (the tables above).",
         "`container.min` is below `container.max` on every axis.",
-        "There is at least one fluid block; each has `min` below `max` on every axis and lies "
-        "inside the domain: the container plus `headroom` above its rim.",
+        "There is water: at least one fluid block or emitter. Each fluid block has `min` below "
+        "`max` on every axis and lies inside the domain: the container plus `headroom` above its "
+        "rim.",
         "Every obstacle lies inside the domain: the container plus `headroom` above its rim.",
         "Every emitter has a non-zero `direction`, `stop_time` later than `start_time`, `speed` "
         "at most `solver.max_speed` (the speed of sound is 10 × `max_speed`), and its nozzle "

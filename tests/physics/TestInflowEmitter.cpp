@@ -174,6 +174,30 @@ private Q_SLOTS:
         QCOMPARE(reread.emitters[0].shape, std::string("disc"));
     }
 
+    void anEmitterAloneIsEnoughWater() {
+        Scene scene = pouring();
+        scene.fluidBlocks.clear();
+        scene.frames.endFrame = 4;
+        QVERIFY(SceneValidator::check(scene).ok());
+        Simulation simulation(scene);
+        QCOMPARE(simulation.state().fluid.size(), std::size_t(0));
+        Interrupter interrupter;
+        while (simulation.frame() < scene.frames.endFrame)
+            simulation.advanceFrame(interrupter);
+        const InflowEmitter emitter(scene.emitters[0], scene.solver.particleSpacing,
+                                    scene.solver.restDensity);
+        const std::size_t expected =
+            emitter.layersBefore(simulation.state().time) * emitter.particlesPerLayer();
+        QVERIFY(expected > 0);
+        QCOMPARE(simulation.state().fluid.size(), expected);
+
+        scene.emitters.clear();
+        const SceneIssues issues = SceneValidator::check(scene);
+        QCOMPARE(issues.errors.size(), std::size_t(1));
+        QVERIFY2(issues.errors[0].find("at least one fluid block or emitter") != std::string::npos,
+                 issues.errors[0].c_str());
+    }
+
     void poursIntoATankWithoutExploding() {
         const Scene scene = pouring();
         const InflowEmitterSettings& jet = scene.emitters[0];
