@@ -64,18 +64,31 @@ nlohmann::ordered_json InfoReport::cacheJson() const {
 }
 
 nlohmann::ordered_json InfoReport::bodiesJson() const {
-    // The container and obstacles are static: their poses come from the scene the cache was
-    // baked from, the same way the solver builds them. Moving bodies will be read from the frame.
+    // The container and obstacles never move: their poses come from the scene the cache was
+    // baked from, built as the solver builds them. The scene's bodies are where the frame has
+    // them.
     const Scene scene = sceneFromJson(manifest_.scene, directory_ + "/manifest.json");
+    std::vector<RigidBody> bodies = SceneSetup::buildBodies(scene);
+    const std::size_t scenery = SceneSetup::sceneryCount(scene);
+    const std::vector<RigidBodyState>& states = frame_.state.bodies;
     nlohmann::ordered_json list = nlohmann::ordered_json::array();
-    for (const RigidBody& body : SceneSetup::buildBodies(scene)) {
+    for (std::size_t k = 0; k < bodies.size(); ++k) {
+        RigidBody& body = bodies[k];
+        if (k >= scenery && k - scenery < states.size())
+            body.setState(states[k - scenery]);
         const Quatd& q = body.orientation();
-        list.push_back({{"name", body.name()},
-                        {"motion", RigidBody::motionName(body.motion())},
-                        {"position", vector(body.position().cast<float>())},
-                        {"orientation", {q.w(), q.x(), q.y(), q.z()}},
-                        {"linear_velocity", vector(body.linearVelocity().cast<float>())},
-                        {"angular_velocity", vector(body.angularVelocity().cast<float>())}});
+        nlohmann::ordered_json entry = {
+            {"name", body.name()},
+            {"motion", RigidBody::motionName(body.motion())},
+            {"position", vector(body.position().cast<float>())},
+            {"orientation", {q.w(), q.x(), q.y(), q.z()}},
+            {"linear_velocity", vector(body.linearVelocity().cast<float>())},
+            {"angular_velocity", vector(body.angularVelocity().cast<float>())}};
+        if (body.isDynamic()) {
+            entry["mass"] = body.inertia().mass();
+            entry["centre_of_mass_offset"] = vector(body.shapeOffset().cast<float>());
+        }
+        list.push_back(std::move(entry));
     }
     return list;
 }

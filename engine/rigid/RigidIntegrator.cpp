@@ -25,16 +25,32 @@ void RigidIntegrator::step(RigidBodyState& state, const RigidBodyInertia& inerti
                            double dt) {
     if (inertia.isInfinite())
         return;
-    // Symplectic Euler: the position uses the updated velocity (Hairer, Lubich & Wanner,
+    const Vec3d turnRate = accelerate(state, inertia, force, torque, gravity, dt);
+    advancePose(state, turnRate, RigidVelocity{}, dt);
+}
+
+Vec3d RigidIntegrator::accelerate(RigidBodyState& state, const RigidBodyInertia& inertia,
+                                  const Vec3d& force, const Vec3d& torque, const Vec3d& gravity,
+                                  double dt) {
+    if (inertia.isInfinite())
+        return state.angularVelocity;
+    // Symplectic Euler: the position moves with the updated velocity (Hairer, Lubich & Wanner,
     // "Geometric Numerical Integration", 2006, Ch. I). First order, but no energy drift on
     // oscillations, unlike explicit Euler.
     state.linearVelocity += dt * (inertia.inverseMass() * force + gravity);
-    state.position += dt * state.linearVelocity;
-    rotate(state, inertia, torque, dt);
+    return spin(state, inertia, torque, dt);
 }
 
-void RigidIntegrator::rotate(RigidBodyState& state, const RigidBodyInertia& inertia,
-                             const Vec3d& torque, double dt) {
+void RigidIntegrator::advancePose(RigidBodyState& state, const Vec3d& turnRate,
+                                  const RigidVelocity& push, double dt) {
+    const Vec3d omegaBody = state.orientation.conjugate() * state.angularVelocity;
+    state.position += dt * (state.linearVelocity + push.linear);
+    state.orientation = advanceOrientation(state.orientation, turnRate + push.angular, dt);
+    state.angularVelocity = state.orientation * omegaBody;
+}
+
+Vec3d RigidIntegrator::spin(RigidBodyState& state, const RigidBodyInertia& inertia,
+                            const Vec3d& torque, double dt) {
     // Why the body frame: there I is constant, so the Euler equations I ω̇ + ω × (Iω) = τ are an
     // ODE in ω alone. Why implicit midpoint for the gyroscopic part: both the kinetic energy
     // ½ ωᵀIω and |L|² = |Iω|² are quadratic invariants of I ω̇ = (Iω) × ω, and the implicit
@@ -52,9 +68,8 @@ void RigidIntegrator::rotate(RigidBodyState& state, const RigidBodyInertia& iner
     // world angular momentum R I ω then drifts at second order instead of first (0.004 % instead
     // of 0.8 % over 1000 steps at |ω|Δt ≈ 0.017 in TestRigidDynamics). For ω constant, as for a
     // sphere, both are the same exponential map.
-    const Vec3d meanOmega = r * (0.5 * (omegaBody + omegaBodyNew));
-    state.orientation = advanceOrientation(state.orientation, meanOmega, dt);
-    state.angularVelocity = state.orientation * omegaBodyNew;
+    state.angularVelocity = r * omegaBodyNew;
+    return r * (0.5 * (omegaBody + omegaBodyNew));
 }
 
 Vec3d RigidIntegrator::gyroscopicStep(const Mat3d& inertiaBody, const Vec3d& omegaBody, double dt) {

@@ -4,6 +4,7 @@
 // calls step() once per sub-step; static and kinematic bodies are not integrated here.
 #include "rigid/RigidBodyInertia.h"
 #include "rigid/RigidBodyState.h"
+#include "rigid/RigidVelocity.h"
 
 namespace airtrap {
 
@@ -19,6 +20,16 @@ public:
     //! orientation turns by the exponential map of the step's mean ω (advanceOrientation()).
     static void step(RigidBodyState& state, const RigidBodyInertia& inertia, const Vec3d& force,
                      const Vec3d& torque, const Vec3d& gravity, double dt);
+    //! The velocity half of step(), so that contacts can act between the two halves. Returns
+    //! the angular velocity (world) the orientation should turn with: the step's mean.
+    static Vec3d accelerate(RigidBodyState& state, const RigidBodyInertia& inertia,
+                            const Vec3d& force, const Vec3d& torque, const Vec3d& gravity,
+                            double dt);
+    //! The pose half: X ← X + Δt (V + push.linear), q ← exp((turnRate + push.angular) Δt) q,
+    //! with the body-frame angular velocity kept. `push` is a contact solver's position-only
+    //! correction (RigidContactSolver).
+    static void advancePose(RigidBodyState& state, const Vec3d& turnRate,
+                            const RigidVelocity& push, double dt);
 
     //! q ← exp(ω Δt) q, renormalised: the exact rotation for ω constant over the step
     //! (RotationVector), so the orientation neither drifts off unit length (as q + ½Δt ω q does)
@@ -31,9 +42,9 @@ public:
     static Vec3d gyroscopicStep(const Mat3d& inertiaBody, const Vec3d& omegaBody, double dt);
 
 private:
-    //! The angular half of step(): ω and orientation.
-    static void rotate(RigidBodyState& state, const RigidBodyInertia& inertia, const Vec3d& torque,
-                       double dt);
+    //! The angular part of accelerate(): the new ω; returns the step's mean ω (world).
+    static Vec3d spin(RigidBodyState& state, const RigidBodyInertia& inertia, const Vec3d& torque,
+                      double dt);
 };
 
 } // namespace airtrap

@@ -4,6 +4,8 @@
 #include "scene/InflowNozzle.h"
 #include "scene/ParameterCodec.h"
 #include "scene/SceneSchema.h"
+// Body placement needs the bodies built as the solver builds them, which lives in sim/.
+#include "sim/BodyPlacementCheck.h"
 
 #include <algorithm>
 #include <cmath>
@@ -54,6 +56,11 @@ public:
         checkEmitters(containerValid);
         checkParticleCount();
         checkOverlaps();
+        checkBodySizes();
+        checkBodyNames();
+        checkKeyframes();
+        if (containerValid && issues_.ok())
+            checkBodyPlacement();
         return issues_;
     }
 
@@ -204,6 +211,74 @@ private:
         }
     }
 
+    void checkBodySizes() {
+        const double spacing = scene_.solver.particleSpacing;
+        for (std::size_t i = 0; i < scene_.bodies.size(); ++i) {
+            const RigidBodySettings& body = scene_.bodies[i];
+            const std::string label = blockLabel("bodies", i, body.name);
+            const auto tooSmall = [&](const std::string& key, double value) {
+                if (value < spacing - kTolerance)
+                    error(label + "." + key + " = " + number(value) +
+                          " m is less than solver.particle_spacing = " + number(spacing) +
+                          " m; the water cannot feel a smaller solid");
+            };
+            if (body.shape == "box")
+                tooSmall("size", body.size.minCoeff());
+            if (body.shape == "sphere" || body.shape == "cylinder")
+                tooSmall("radius", body.radius);
+            if (body.shape == "cylinder")
+                tooSmall("height", body.height);
+            if (body.shape == "mesh" && body.mesh.empty())
+                error(label + ".mesh is empty; shape \"mesh\" needs a mesh file");
+        }
+    }
+
+    void checkBodyNames() {
+        for (std::size_t i = 0; i < scene_.bodies.size(); ++i)
+            for (std::size_t j = 0; j < i; ++j)
+                if (scene_.bodies[i].name == scene_.bodies[j].name)
+                    error(blockLabel("bodies", i, scene_.bodies[i].name) + " has the name of " +
+                          blockLabel("bodies", j, scene_.bodies[j].name) +
+                          "; keyframes find bodies by name, so names must differ");
+    }
+
+    const RigidBodySettings* bodyNamed(const std::string& name) const {
+        for (const RigidBodySettings& body : scene_.bodies)
+            if (body.name == name)
+                return &body;
+        return nullptr;
+    }
+
+    void checkKeyframes() {
+        for (std::size_t i = 0; i < scene_.keyframes.size(); ++i) {
+            const BodyKeyframe& key = scene_.keyframes[i];
+            const std::string label = "keyframes[" + std::to_string(i) + "]";
+            const RigidBodySettings* body = bodyNamed(key.body);
+            if (!body) {
+                error(label + ".body = " + ParameterCodec::formatValue(key.body) +
+                      " names no body; expected the name of a kinematic body");
+                continue;
+            }
+            if (body->motion != "kinematic")
+                error(label + ".body = " + ParameterCodec::formatValue(key.body) + " is " +
+                      body->motion + "; keyframes move kinematic bodies only");
+            for (std::size_t j = 0; j < i; ++j)
+                if (scene_.keyframes[j].body == key.body &&
+                    std::abs(scene_.keyframes[j].time - key.time) < kTolerance)
+                    error(label + ".time = " + number(key.time) + " s repeats keyframes[" +
+                          std::to_string(j) + "] of the same body; times must differ");
+        }
+    }
+
+    void checkBodyPlacement() {
+        const BodyPlacementCheck::Findings findings = BodyPlacementCheck::run(scene_);
+        for (const std::string& message : findings.errors)
+            issues_.errors.push_back(message.starts_with(source_) ? message
+                                                                  : source_ + ": " + message);
+        for (const std::string& message : findings.warnings)
+            warning(message);
+    }
+
     const Scene& scene_;
     std::string source_;
     SceneIssues issues_;
@@ -230,9 +305,15 @@ std::vector<std::string> SceneValidator::ruleDescriptions() {
             number(kMaxParticles / 1e6) +
             " million particles (the blocks' total volume / `particle_spacing`³ plus the "
             "budgets).",
+        "Bodies have different names; boxes, spheres and cylinders are at least "
+        "`particle_spacing` in every size; a mesh body names a closed, readable mesh file "
+        "(relative to the scene file); every body lies inside the domain.",
+        "Every keyframe names a kinematic body, and no two keyframes of a body share a time.",
         "Warnings, which do not stop a bake: fluid blocks that overlap each other or an "
-        "obstacle, fluid blocks thinner than `particle_spacing`, and emitters whose "
-        "`max_particles` is less than one layer of their nozzle.",
+        "obstacle, fluid blocks thinner than `particle_spacing`, emitters whose "
+        "`max_particles` is less than one layer of their nozzle, and bodies that overlap the "
+        "water (whose particles inside the body are left out), an obstacle, the container or "
+        "each other at t = 0.",
     };
 }
 

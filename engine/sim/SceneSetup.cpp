@@ -1,9 +1,11 @@
 #include "sim/SceneSetup.h"
 
 #include "rigid/BoundarySampler.h"
+#include "sim/BodyBuilder.h"
 #include "sph/WcsphSolver.h"
 
 #include <cmath>
+#include <limits>
 
 namespace airtrap {
 
@@ -29,13 +31,25 @@ bool insideAnyObstacle(const Scene& scene, const Vec3d& x, double margin) {
     return false;
 }
 
-//! A static box body whose frame sits at the box's centre, sampled on its surface.
-RigidBody boxBody(const std::string& name, const Aabb& box, double spacing,
+//! A static box body whose frame sits at the box's centre, sampled on the surface of `layer`
+//! (the solid `shape`'s surface moved half a spacing into the solid).
+RigidBody boxBody(const std::string& name, const Aabb& layer, BodyShape shape, double spacing,
                   BoundarySampler::WaterSide side, bool openTop, const CubicSplineKernel& kernel) {
-    const Vec3d half = 0.5 * box.size();
+    const Vec3d half = 0.5 * layer.size();
     BoundaryParticles surface = BoundarySampler::sampleBox({-half, half}, spacing, side, openTop);
     BoundarySampler::computeVolumes(surface, kernel, spacing);
-    return RigidBody(name, RigidBody::Motion::Static, std::move(surface), box.center());
+    RigidBody body(name, std::move(surface), std::move(shape), {layer.center(), Quatd::Identity()});
+    body.setSurfaceOffset(0.5 * spacing);
+    return body;
+}
+
+//! The tank and the obstacles: water slides along them (their friction is the solver's wall
+//! viscosity), while for bodies they are neutral, so a body's own restitution and friction
+//! decide its contacts with them (ContactMaterial::combine).
+void setSceneryMaterials(RigidBody& body, const Scene& scene) {
+    const ContactMaterial water{scene.solver.wallRestitution, 0.0};
+    const ContactMaterial neutral{0.0, std::numeric_limits<double>::infinity()};
+    body.setMaterials(water, neutral);
 }
 
 } // namespace
@@ -44,16 +58,44 @@ std::vector<RigidBody> SceneSetup::buildBodies(const Scene& scene) {
     const double dx = scene.solver.particleSpacing;
     const CubicSplineKernel kernel(static_cast<float>(scene.supportRadius()));
     std::vector<RigidBody> bodies;
-    const Aabb tank = Aabb{scene.container.min, scene.container.max}.expanded(0.5 * dx);
-    bodies.push_back(
-        boxBody("Container", tank, dx, BoundarySampler::WaterSide::Inside, true, kernel));
+    const Aabb inside{scene.container.min, scene.container.max};
+    const Aabb tankLayer = inside.expanded(0.5 * dx);
+    const Vec3d tankCentre = tankLayer.center();
+    bodies.push_back(boxBody("Container", tankLayer,
+                             BodyShape::tank({inside.min - tankCentre, inside.max - tankCentre}),
+                             dx, BoundarySampler::WaterSide::Inside, true, kernel));
     for (const BoxObstacle& obstacle : scene.obstacles)
-        bodies.push_back(boxBody(obstacle.name, obstacleBox(obstacle).expanded(0.5 * dx), dx,
+        bodies.push_back(boxBody(obstacle.name, obstacleBox(obstacle).expanded(-0.5 * dx),
+                                 BodyShape::box(obstacle.size), dx,
                                  BoundarySampler::WaterSide::Outside, false, kernel));
+    for (RigidBody& body : bodies)
+        setSceneryMaterials(body, scene);
+    const BodyBuilder builder(scene, kernel);
+    for (std::size_t index = 0; index < scene.bodies.size(); ++index)
+        bodies.push_back(builder.build(index));
     return bodies;
 }
 
+std::size_t SceneSetup::sceneryCount(const Scene& scene) {
+    return 1 + scene.obstacles.size();
+}
+
+std::vector<RigidBodyState> SceneSetup::initialBodyStates(const Scene& scene,
+                                                          const std::vector<RigidBody>& bodies) {
+    std::vector<RigidBodyState> states;
+    for (std::size_t b = sceneryCount(scene); b < bodies.size(); ++b)
+        states.push_back(bodies[b].state());
+    return states;
+}
+
 void SceneSetup::fillFluid(const Scene& scene, const WcsphSolver& solver, SimulationState& state) {
+    const std::vector<RigidBody>& bodies = solver.bodies();
+    const auto insideABody = [&](const Vec3d& x, double margin) {
+        for (std::size_t b = sceneryCount(scene); b < bodies.size(); ++b)
+            if (bodies[b].signedDistance(x) < margin)
+                return true;
+        return false;
+    };
     const double dx = scene.solver.particleSpacing;
     const double gravity = -scene.solver.gravity.y();
     const Aabb domain = scene.domain();
@@ -69,7 +111,7 @@ void SceneSetup::fillFluid(const Scene& scene, const WcsphSolver& solver, Simula
                 for (int i = 0; i < count.x(); ++i) {
                     const Vec3d x = b.min + (Vec3d(i, j, k) + Vec3d::Constant(0.5)) * dx;
                     if (!domain.contains(x) || insideAnyEarlierBlock(scene, block, x) ||
-                        insideAnyObstacle(scene, x, 0.5 * dx))
+                        insideAnyObstacle(scene, x, 0.5 * dx) || insideABody(x, 0.25 * dx))
                         continue;
                     const double depth = std::max(0.0, b.max.y() - x.y());
                     const float density =

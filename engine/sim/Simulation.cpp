@@ -59,13 +59,15 @@ std::string percent(double fraction) {
 Simulation::Simulation(Scene scene, SimulationState resumeFrom)
     : scene_(std::move(scene)), state_(std::move(resumeFrom)),
       solver_(std::make_unique<WcsphSolver>(scene_.solver, scene_.domain(),
-                                            SceneSetup::buildBodies(scene_))) {
+                                            SceneSetup::buildBodies(scene_),
+                                            SceneSetup::sceneryCount(scene_))) {
     for (const InflowEmitterSettings& settings : scene_.emitters)
         emitters_.emplace_back(settings, scene_.solver.particleSpacing, scene_.solver.restDensity);
     lastFrameStats_ = measure(state_.fluid);
 }
 
 Simulation::Simulation(Scene scene) : Simulation(std::move(scene), SimulationState{}) {
+    state_.bodies = SceneSetup::initialBodyStates(scene_, solver_->bodies());
     SceneSetup::fillFluid(scene_, *solver_, state_);
     lastFrameStats_ = measure(state_.fluid);
 }
@@ -88,6 +90,7 @@ Simulation::Advance Simulation::advanceFrame(Interrupter& interrupter, const Ste
         const double stepStart = state_.time;
         // The last step lands on the frame time exactly, not on an accumulated sum.
         state_.time = report.timeStep == remaining ? target : state_.time + report.timeStep;
+        solver_->followPaths(state_);
         // After the step, so that the cached frame holds the particles due by its time and a
         // resumed bake starts from the same set. Growth is not loss: `lost` counts only the
         // particles the solver removed at the domain's walls.
@@ -117,6 +120,7 @@ StepReport Simulation::step(double maxTimeStep) {
     const StepReport report = solver_->step(state_, maxTimeStep);
     const double stepStart = state_.time;
     state_.time += report.timeStep;
+    solver_->followPaths(state_);
     emitInflow(stepStart, state_.time);
     return report;
 }

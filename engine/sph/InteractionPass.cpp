@@ -66,7 +66,8 @@ float InteractionPass::boundaryDensityRate(std::size_t i, const InteractionInput
 
 double InteractionPass::accelerations(const InteractionInputs& in, const NeighborList& neighbors,
                                       const std::vector<float>& pressureTerms, double dt,
-                                      std::vector<Vec3f>& accelerations) const {
+                                      std::vector<Vec3f>& accelerations,
+                                      ContactRecords* contacts) const {
     const float step = static_cast<float>(dt);
     return tbb::parallel_reduce(
         Range(0, in.fluid.size(), kGrain), 0.0,
@@ -79,10 +80,15 @@ double InteractionPass::accelerations(const InteractionInputs& in, const Neighbo
                 // The impulse is left out of the time-step criterion: it is a velocity change
                 // applied once, not a force the step must resolve.
                 largest = std::max(largest, double(acceleration.norm()));
-                if (contact.boundaryParticle >= 0)
-                    acceleration += contactImpulse(in.fluid.velocities[i], acceleration, contact,
-                                                   in.boundary, step);
+                Vec3f impulse = Vec3f::Zero();
+                if (contact.boundaryParticle >= 0) {
+                    impulse = contactImpulse(in.fluid.velocities[i], acceleration, contact,
+                                             in.boundary, step);
+                    acceleration += impulse / (constants_.mass * step);
+                }
                 accelerations[i] = acceleration;
+                if (contacts)
+                    recordContact(i, contact, impulse, in.boundary, *contacts);
             }
             return largest;
         },
@@ -127,12 +133,9 @@ Vec3f InteractionPass::boundaryForce(std::size_t i, const InteractionInputs& in,
     if (boundary.size() == 0)
         return Vec3f::Zero();
     const auto& bx = boundary.positions();
-    const auto& bv = boundary.velocities();
-    const auto& bpsi = boundary.psi();
     const Vec3f xi = in.positions[i];
     const Vec3f vi = in.fluid.velocities[i];
     const float rhoi = in.fluid.densities[i];
-    const float pressurei = pressureTerm * rhoi * rhoi;
     contact.distance2 = constants_.contactRadius * constants_.contactRadius;
     Vec3f force = Vec3f::Zero();
     boundary.grid().forEachNeighborRange(
@@ -142,17 +145,7 @@ Vec3f InteractionPass::boundaryForce(std::size_t i, const InteractionInputs& in,
                 const float r2 = d.squaredNorm();
                 if (r2 >= radius2_)
                     continue;
-                const Vec3f grad = kernel_.gradientFromSquared(d, r2);
-                const float approach = (vi - bv[b]).dot(d);
-                float viscosity = 0.0f;
-                if (approach < 0.0f)
-                    viscosity = -constants_.wallViscosity * approach / ((r2 + eta2_) * rhoi);
-                // The wall's pressure is the particle's, extrapolated hydrostatically to the wall
-                // particle (Adami et al. 2012), so that a floor carries the weight of the layer
-                // above it instead of half of it.
-                const float wallPressure =
-                    std::max(0.0f, pressurei + rhoi * constants_.gravity.dot(bx[b] - xi));
-                force -= bpsi[b] * (pressureTerm + wallPressure / (rhoi * rhoi) + viscosity) * grad;
+                force += boundaryPairAcceleration(xi, vi, rhoi, pressureTerm, b, d, r2, boundary);
                 if (r2 < contact.distance2) {
                     contact.distance2 = r2;
                     contact.boundaryParticle = b;
@@ -160,6 +153,23 @@ Vec3f InteractionPass::boundaryForce(std::size_t i, const InteractionInputs& in,
             }
         });
     return force;
+}
+
+Vec3f InteractionPass::boundaryPairAcceleration(const Vec3f& xi, const Vec3f& vi, float rhoi,
+                                                float pressureTerm, std::size_t b, const Vec3f& d,
+                                                float r2, const BoundaryModel& boundary) const {
+    const Vec3f grad = kernel_.gradientFromSquared(d, r2);
+    const float approach = (vi - boundary.velocities()[b]).dot(d);
+    float viscosity = 0.0f;
+    if (approach < 0.0f)
+        viscosity = -constants_.wallViscosity * approach / ((r2 + eta2_) * rhoi);
+    // The wall's pressure is the particle's, extrapolated hydrostatically to the wall particle
+    // (Adami et al. 2012), so that a floor carries the weight of the layer above it instead of
+    // half of it.
+    const float pressurei = pressureTerm * rhoi * rhoi;
+    const float wallPressure =
+        std::max(0.0f, pressurei + rhoi * constants_.gravity.dot(boundary.positions()[b] - xi));
+    return -boundary.psi()[b] * (pressureTerm + wallPressure / (rhoi * rhoi) + viscosity) * grad;
 }
 
 Vec3f InteractionPass::contactImpulse(const Vec3f& velocity, const Vec3f& acceleration,
@@ -171,7 +181,71 @@ Vec3f InteractionPass::contactImpulse(const Vec3f& velocity, const Vec3f& accele
     const float normalSpeed = predicted.dot(normal);
     if (normalSpeed >= 0.0f)
         return Vec3f::Zero();
-    return (-(1.0f + constants_.restitution) * normalSpeed / dt) * normal;
+    const BodyContactTerms& body = boundary.contactTerms(boundary.bodyOf()[b]);
+    const Vec3d x = boundary.positions()[b].cast<double>();
+    const double inverseWaterMass = 1.0 / constants_.mass;
+    const auto effectiveMass = [&](const Vec3f& direction) {
+        return 1.0 / (inverseWaterMass + body.inverseEffectiveMass(x, direction.cast<double>()));
+    };
+    const float normalImpulse = static_cast<float>(-(1.0 + body.restitution) * normalSpeed *
+                                                   effectiveMass(normal));
+    Vec3f impulse = normalImpulse * normal;
+    const Vec3f slip = predicted - normalSpeed * normal;
+    const float slipSpeed = slip.norm();
+    if (body.friction > 0.0f && slipSpeed > 0.0f) {
+        const Vec3f tangent = slip / slipSpeed;
+        const float stopping = static_cast<float>(slipSpeed * effectiveMass(tangent));
+        impulse -= std::min(body.friction * normalImpulse, stopping) * tangent;
+    }
+    return impulse;
+}
+
+void InteractionPass::recordContact(std::size_t i, const Contact& contact, const Vec3f& impulse,
+                                    const BoundaryModel& boundary,
+                                    ContactRecords& contacts) const {
+    const bool onDynamicBody =
+        contact.boundaryParticle >= 0 &&
+        boundary.contactTerms(boundary.bodyOf()[contact.boundaryParticle]).dynamic &&
+        impulse != Vec3f::Zero();
+    contacts.boundaryParticle[i] =
+        onDynamicBody ? static_cast<std::int32_t>(contact.boundaryParticle) : -1;
+    contacts.impulse[i] = onDynamicBody ? impulse : Vec3f::Zero();
+}
+
+void InteractionPass::bodyReactions(const InteractionInputs& in,
+                                    const std::vector<float>& pressureTerms,
+                                    const ContactRecords& contacts, double dt,
+                                    std::vector<Vec3d>& forces) const {
+    const BoundaryModel& boundary = in.boundary;
+    forces.assign(boundary.size(), Vec3d::Zero());
+    const float inverseStep = static_cast<float>(1.0 / dt);
+    // Each boundary particle sums only its own pairs, in the water's sorted order: parallel and
+    // deterministic, like the water's passes.
+    tbb::parallel_for(Range(0, boundary.size(), kGrain), [&](const Range& r) {
+        for (std::size_t b = r.begin(); b != r.end(); ++b) {
+            if (!boundary.contactTerms(boundary.bodyOf()[b]).dynamic)
+                continue;
+            const Vec3f xb = boundary.positions()[b];
+            Vec3f force = Vec3f::Zero();
+            in.grid.forEachNeighborRange(
+                xb, kernel_.supportRadius(), [&](std::uint32_t begin, std::uint32_t end) {
+                    for (std::uint32_t i = begin; i < end; ++i) {
+                        const Vec3f xi = in.positions[i];
+                        const Vec3f d = xi - xb;
+                        const float r2 = d.squaredNorm();
+                        if (r2 >= radius2_)
+                            continue;
+                        force -= constants_.mass *
+                                 boundaryPairAcceleration(xi, in.fluid.velocities[i],
+                                                          in.fluid.densities[i], pressureTerms[i],
+                                                          b, d, r2, boundary);
+                        if (contacts.boundaryParticle[i] == static_cast<std::int32_t>(b))
+                            force -= inverseStep * contacts.impulse[i];
+                    }
+                });
+            forces[b] = force.cast<double>();
+        }
+    });
 }
 
 } // namespace airtrap

@@ -4,10 +4,13 @@
 //  1. densityRates: dρ/dt of eq. 2 over water and boundary particles.
 //  2. accelerations: eq. 1 with Monaghan's artificial viscosity, gravity, and the impulse-based
 //     boundary force of eq. 4 (fluid force F_f plus the contact impulse J/Δt) against every body.
+// A third, bodyReactions, gives each dynamic body the equal and opposite force, summed per
+// boundary particle over its water neighbours with the same pair formula as pass 2.
 // Two passes rather than one because the pressure of pass 2 must come from the density already
 // advanced with pass 1 (symplectic Euler for the pair ρ, v): with both evaluated from the same old
 // state, the scheme is forward Euler for sound waves, which grow without bound.
 #include "sph/BoundaryModel.h"
+#include "sph/ContactRecords.h"
 #include "sph/CubicSplineKernel.h"
 #include "sph/NeighborList.h"
 #include "sph/NeighborSweep.h"
@@ -23,7 +26,6 @@ struct InteractionConstants {
     float fluidViscosity = 0.0f; //!< α c h of Π between water particles
     float wallViscosity = 0.0f;  //!< the same against boundary particles (wall friction)
     float contactRadius = 0.0f;  //!< m, distance below which the contact impulse may act
-    float restitution = 0.0f;    //!< ε of the contact impulse against bodies
     Vec3f gravity = Vec3f::Zero();
 };
 
@@ -46,10 +48,19 @@ public:
 
     //! dv/dt of every particle into `accelerations` (sized by the caller), from the pressure term
     //! p/ρ² of each particle. Returns the largest acceleration without contact impulses, which
-    //! feeds the next Δt.
+    //! feeds the next Δt. When `contacts` is given (sized by the caller), records the impulses
+    //! from dynamic bodies there.
     double accelerations(const InteractionInputs& in, const NeighborList& neighbors,
                          const std::vector<float>& pressureTerms, double dt,
-                         std::vector<Vec3f>& accelerations) const;
+                         std::vector<Vec3f>& accelerations, ContactRecords* contacts) const;
+
+    //! The force (N, world) the water exerts on each boundary particle of a dynamic body this
+    //! step, into `forces` (one per sorted boundary particle; zero for other bodies): minus the
+    //! pressure and friction it exerts on its water neighbours, minus the contact impulses it
+    //! gave them over Δt. Same inputs as the force pass, after it.
+    void bodyReactions(const InteractionInputs& in, const std::vector<float>& pressureTerms,
+                       const ContactRecords& contacts, double dt,
+                       std::vector<Vec3d>& forces) const;
 
 private:
     //! The nearest boundary particle within the contact radius, if any.
@@ -63,10 +74,20 @@ private:
                      const std::vector<float>& pressureTerms) const;
     Vec3f boundaryForce(std::size_t i, const InteractionInputs& in, float pressureTerm,
                         Contact& contact) const;
-    //! J/(mᵢΔt) of eq. 4 for a particle that would still approach the body after this step. A
-    //! static body has infinite mass, so j = −(1 + ε) mᵢ uₙ.
+    //! Acceleration of water particle i (at xi, velocity vi, density rhoi, pressure term p/ρ²)
+    //! from boundary particle b at offset d = xi − x_b, |d|² = r2 < support²: the pressure of
+    //! the particle and of the wall plus the wall's artificial viscosity, weighted by Ψ_b.
+    Vec3f boundaryPairAcceleration(const Vec3f& xi, const Vec3f& vi, float rhoi,
+                                   float pressureTerm, std::size_t b, const Vec3f& d, float r2,
+                                   const BoundaryModel& boundary) const;
+    //! The contact impulse J (N·s) of eq. 4 for a particle that would still approach the body
+    //! after this step: j = −(1 + ε) uₙ / (1/mᵢ + K_B(n, r)) along the normal, plus Coulomb
+    //! friction against the tangential slip, bounded by μ j. A static body has K_B = 0.
     Vec3f contactImpulse(const Vec3f& velocity, const Vec3f& acceleration, const Contact& contact,
                          const BoundaryModel& boundary, float dt) const;
+    //! Notes particle i's impulse when it came from a dynamic body (else −1, zero).
+    void recordContact(std::size_t i, const Contact& contact, const Vec3f& impulse,
+                       const BoundaryModel& boundary, ContactRecords& contacts) const;
 
     CubicSplineKernel kernel_;
     InteractionConstants constants_;

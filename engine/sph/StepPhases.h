@@ -9,10 +9,12 @@ namespace airtrap {
 
 class StepPhases {
 public:
-    enum Phase { Neighbours, Density, Forces, Integrate, Count };
+    //! Bodies: placing moving bodies' boundary particles, the water's reaction on dynamic bodies,
+    //! their contacts and motion.
+    enum Phase { Neighbours, Density, Forces, Bodies, Integrate, Count };
 
-    static constexpr std::array<std::string_view, Count> kNames = {"neighbours", "density",
-                                                                   "forces", "integrate"};
+    static constexpr std::array<std::string_view, Count> kNames = {
+        "neighbours", "density", "forces", "bodies", "integrate"};
 
     //! Times one phase for as long as it lives.
     class Scope {

@@ -1,5 +1,7 @@
 #include "sph/WcsphSolver.h"
 
+#include "core/Error.h"
+
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -32,7 +34,7 @@ double parallelMax(std::size_t n, F&& f) {
 } // namespace
 
 WcsphSolver::WcsphSolver(const SolverSettings& settings, const Aabb& domain,
-                         std::vector<RigidBody> bodies)
+                         std::vector<RigidBody> bodies, std::size_t sceneryCount)
     : settings_(settings),
       kernel_(static_cast<float>(settings.supportFactor * settings.particleSpacing)),
       spacing_(static_cast<float>(settings.particleSpacing)),
@@ -42,8 +44,12 @@ WcsphSolver::WcsphSolver(const SolverSettings& settings, const Aabb& domain,
       // The grid reaches one support radius beyond the domain so that the boundary layer, which
       // sits half a spacing outside the container's walls, is inside it.
       gridDomain_(domain.expanded(kernel_.supportRadius())), bodies_(std::move(bodies)),
+      sceneryCount_(std::min(sceneryCount, bodies_.size())),
       boundary_(gridDomain_, kernel_.supportRadius(), static_cast<float>(settings.restDensity)),
+      coupling_(settings.gravity, settings.particleSpacing),
       grid_(gridDomain_, kernel_.supportRadius()), passes_(kernel_, interactionConstants()) {
+    for (const RigidBody& body : bodies_)
+        anyBodyMoves_ = anyBodyMoves_ || body.isMoving();
     boundary_.rebuild(bodies_);
 }
 
@@ -56,7 +62,6 @@ InteractionConstants WcsphSolver::interactionConstants() const {
     constants.wallViscosity = static_cast<float>(settings_.wallViscosity) * c * h;
     // Water rests one spacing from the boundary layer; half of that is a real contact.
     constants.contactRadius = 0.5f * spacing_;
-    constants.restitution = static_cast<float>(settings_.wallRestitution);
     constants.gravity = settings_.gravity.cast<float>();
     return constants;
 }
@@ -80,6 +85,10 @@ StepReport WcsphSolver::step(SimulationState& state, double timeToFrameEnd) {
         StepPhases::Scope scope(phases_, StepPhases::Neighbours);
         sortByCell(fluid, report);
     }
+    if (anyBodyMoves_) {
+        StepPhases::Scope scope(phases_, StepPhases::Bodies);
+        placeBodies(state);
+    }
     report.timeStep = chooseTimeStep(report.maxSpeed, state.lastMaxAcceleration, timeToFrameEnd);
     const InteractionInputs inputs{fluid, sortedPositions_, grid_, boundary_};
     {
@@ -94,8 +103,16 @@ StepReport WcsphSolver::step(SimulationState& state, double timeToFrameEnd) {
     {
         StepPhases::Scope scope(phases_, StepPhases::Forces);
         accelerations_.resize(fluid.size());
-        report.maxAcceleration = passes_.accelerations(inputs, neighbors_, pressureOverDensity2_,
-                                                       report.timeStep, accelerations_);
+        const bool recordContacts = boundary_.hasDynamicBodies();
+        if (recordContacts)
+            contacts_.resize(fluid.size());
+        report.maxAcceleration =
+            passes_.accelerations(inputs, neighbors_, pressureOverDensity2_, report.timeStep,
+                                  accelerations_, recordContacts ? &contacts_ : nullptr);
+    }
+    if (boundary_.hasDynamicBodies()) {
+        StepPhases::Scope scope(phases_, StepPhases::Bodies);
+        moveDynamicBodies(inputs, state, report.timeStep);
     }
     {
         StepPhases::Scope scope(phases_, StepPhases::Integrate);
@@ -105,6 +122,38 @@ StepReport WcsphSolver::step(SimulationState& state, double timeToFrameEnd) {
     state.lastTimeStep = report.timeStep;
     ++state.steps;
     return report;
+}
+
+void WcsphSolver::followPaths(SimulationState& state) {
+    for (std::size_t k = 0; k < state.bodies.size(); ++k) {
+        RigidBody& body = bodies_.at(sceneryCount_ + k);
+        if (body.motion() != RigidBody::Motion::Kinematic)
+            continue;
+        body.followPath(state.time);
+        state.bodies[k] = body.state();
+    }
+}
+
+void WcsphSolver::placeBodies(SimulationState& state) {
+    if (state.bodies.size() != bodies_.size() - sceneryCount_)
+        throw Error(ErrorKind::CacheCorrupt,
+                    "the state holds " + std::to_string(state.bodies.size()) +
+                        " rigid bodies but the scene has " +
+                        std::to_string(bodies_.size() - sceneryCount_) +
+                        "; the frame was baked from another scene");
+    for (std::size_t k = 0; k < state.bodies.size(); ++k)
+        bodies_[sceneryCount_ + k].setState(state.bodies[k]);
+    followPaths(state);
+    boundary_.rebuild(bodies_);
+}
+
+void WcsphSolver::moveDynamicBodies(const InteractionInputs& inputs, SimulationState& state,
+                                    double dt) {
+    passes_.bodyReactions(inputs, pressureOverDensity2_, contacts_, dt, reactions_);
+    coupling_.advance(bodies_, boundary_, reactions_, dt);
+    for (std::size_t k = 0; k < state.bodies.size(); ++k)
+        if (bodies_[sceneryCount_ + k].isDynamic())
+            state.bodies[k] = bodies_[sceneryCount_ + k].state();
 }
 
 void WcsphSolver::sortByCell(ParticleSet& fluid, StepReport& report) {
@@ -206,7 +255,8 @@ std::size_t WcsphSolver::allocatedBytes() const {
     return grid_.allocatedBytes() + boundary_.allocatedBytes() + sortedPositions_.allocatedBytes() +
            neighbors_.allocatedBytes() + pressureOverDensity2_.capacity() * sizeof(float) +
            densityRates_.capacity() * sizeof(float) + accelerations_.capacity() * sizeof(Vec3f) +
-           reorderScratch_.allocatedBytes();
+           reorderScratch_.allocatedBytes() + contacts_.allocatedBytes() +
+           reactions_.capacity() * sizeof(Vec3d);
 }
 
 } // namespace airtrap

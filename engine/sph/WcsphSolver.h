@@ -10,6 +10,7 @@
 #include "sph/CubicSplineKernel.h"
 #include "sph/InteractionPass.h"
 #include "sph/NeighborGrid.h"
+#include "sph/RigidCoupling.h"
 #include "sph/StepPhases.h"
 
 #include <vector>
@@ -28,11 +29,19 @@ struct StepReport {
 
 class WcsphSolver {
 public:
-    WcsphSolver(const SolverSettings& settings, const Aabb& domain, std::vector<RigidBody> bodies);
+    //! `bodies` holds the scenery first (container, obstacles: static, not in the state), then
+    //! `bodies.size() − sceneryCount` bodies whose states SimulationState::bodies carries in
+    //! the same order.
+    WcsphSolver(const SolverSettings& settings, const Aabb& domain, std::vector<RigidBody> bodies,
+                std::size_t sceneryCount = 0);
 
     //! Takes one step of at most `timeToFrameEnd` seconds; the step is shortened so that frame
-    //! times are met exactly without a sliver of a last step. Reorders the particles.
+    //! times are met exactly without a sliver of a last step. Reorders the particles; moves the
+    //! dynamic bodies with the water.
     StepReport step(SimulationState& state, double timeToFrameEnd);
+
+    //! Puts the kinematic bodies of `state` where their paths have them at state.time.
+    void followPaths(SimulationState& state);
 
     //! Tait equation of state, p = B((ρ/ρ₀)^γ − 1), clamped at 0 so the free surface does not
     //! pull particles into clumps.
@@ -44,6 +53,7 @@ public:
     float particleMass() const { return mass_; }
     double speedOfSound() const { return speedOfSound_; }
     const std::vector<RigidBody>& bodies() const { return bodies_; }
+    const RigidCoupling& coupling() const { return coupling_; }
     const BoundaryModel& boundary() const { return boundary_; }
     const NeighborGrid& grid() const { return grid_; }
     StepPhases& phases() { return phases_; }
@@ -62,6 +72,11 @@ private:
     InteractionConstants interactionConstants() const;
     //! v ← v + Δt a, x ← x + Δt v; returns whether a NaN or infinity appeared.
     bool integrate(ParticleSet& fluid, double dt);
+    //! Copies the state's bodies into bodies_ (kinematic ones on their paths) and places their
+    //! boundary particles.
+    void placeBodies(SimulationState& state);
+    //! The water's reaction on the dynamic bodies, their contacts and motion over `dt`.
+    void moveDynamicBodies(const InteractionInputs& inputs, SimulationState& state, double dt);
 
     SolverSettings settings_;
     CubicSplineKernel kernel_;
@@ -71,7 +86,10 @@ private:
     double tait_; //!< B = ρ₀c²/γ
     Aabb gridDomain_;
     std::vector<RigidBody> bodies_;
+    std::size_t sceneryCount_;
+    bool anyBodyMoves_ = false;
     BoundaryModel boundary_;
+    RigidCoupling coupling_;
     NeighborGrid grid_;
     InteractionPass passes_;
     StepPhases phases_;
@@ -83,6 +101,8 @@ private:
     std::vector<float> densityRates_;         //!< dρ/dt (eq. 2)
     std::vector<Vec3f> accelerations_;        //!< dv/dt (eq. 1 + contact impulses)
     ParticleSet reorderScratch_;
+    ContactRecords contacts_;         //!< impulses from dynamic bodies, for their reaction
+    std::vector<Vec3d> reactions_;    //!< N, the water's force on each boundary particle
 };
 
 } // namespace airtrap

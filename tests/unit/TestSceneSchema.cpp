@@ -21,7 +21,8 @@ private Q_SLOTS:
         for (const SchemaSection& section : SceneSchema::sections())
             keys.push_back(section.key);
         const std::vector<std::string> expected{
-            "", "solver", "frames", "container", "fluid_blocks", "obstacles", "emitters"};
+            "",          "solver",    "frames", "container", "fluid_blocks",
+            "obstacles", "emitters", "bodies", "keyframes"};
         QCOMPARE(keys, expected);
         QVERIFY(SceneSchema::findSection("fluid_blocks")->isArray);
         QVERIFY(!SceneSchema::findSection("solver")->isArray);
@@ -54,6 +55,8 @@ private Q_SLOTS:
         scene.fluidBlocks.resize(1);
         scene.obstacles.resize(1);
         scene.emitters.resize(1);
+        scene.bodies.resize(1);
+        scene.keyframes.resize(1);
         for (const SchemaSection& section : SceneSchema::sections())
             for (const BoundParameter& parameter : section.parameters) {
                 const std::string path = SceneSchema::pathOf(section, 0, parameter.declaration.key);

@@ -1,0 +1,147 @@
+#include "sim/BodyBuilder.h"
+
+#include "core/Error.h"
+#include "rigid/BoundarySampler.h"
+#include "rigid/EulerRotation.h"
+#include "rigid/MeshLoader.h"
+#include "rigid/ShapeSampler.h"
+#include "rigid/SignedDistanceField.h"
+#include "scene/ParameterCodec.h"
+
+#include <filesystem>
+
+namespace airtrap {
+namespace {
+
+//! Voxels of a mesh's distance field per particle spacing: contacts need the surface to a
+//! fraction of a spacing.
+constexpr double kVoxelsPerSpacing = 2.0;
+//! Interior band of the field, in voxels: deep enough for any contact the solver resolves.
+constexpr double kInteriorBandVoxels = 8.0;
+
+std::string bodyLabel(const Scene& scene, const RigidBodySettings& body) {
+    std::size_t index = 0;
+    while (index < scene.bodies.size() && &scene.bodies[index] != &body)
+        ++index;
+    return (scene.sourcePath.empty() ? std::string("scene") : scene.sourcePath) + ": bodies[" +
+           std::to_string(index) + "] (" + ParameterCodec::formatValue(body.name) + ")";
+}
+
+//! Moves every particle `distance` along its normal.
+void pushOut(BoundaryParticles& particles, double distance) {
+    for (std::size_t k = 0; k < particles.size(); ++k)
+        particles.positions[k] += static_cast<float>(distance) * particles.normals[k];
+}
+
+} // namespace
+
+BodyBuilder::BodyBuilder(const Scene& scene, const CubicSplineKernel& kernel)
+    : scene_(scene), kernel_(kernel), spacing_(scene.solver.particleSpacing) {}
+
+std::string BodyBuilder::meshPath(const Scene& scene, const RigidBodySettings& body) {
+    const std::filesystem::path file(body.mesh);
+    if (file.is_absolute() || scene.sourcePath.empty())
+        return file.string();
+    return (std::filesystem::path(scene.sourcePath).parent_path() / file).lexically_normal().string();
+}
+
+TriangleMesh BodyBuilder::loadMesh(const Scene& scene, const RigidBodySettings& body) {
+    if (body.mesh.empty())
+        throw Error(ErrorKind::InvalidInput,
+                    bodyLabel(scene, body) + ".mesh is empty; shape \"mesh\" needs a mesh file");
+    try {
+        return MeshLoader::load(meshPath(scene, body), body.meshScale);
+    } catch (const Error& error) {
+        throw Error(ErrorKind::InvalidInput, bodyLabel(scene, body) + ".mesh: " + error.what());
+    }
+}
+
+BodyShape BodyBuilder::shapeOf(const Scene& scene, const RigidBodySettings& body, double spacing) {
+    if (body.shape == "sphere")
+        return BodyShape::sphere(body.radius);
+    if (body.shape == "cylinder")
+        return BodyShape::cylinder(body.radius, body.height);
+    if (body.shape == "mesh") {
+        const double voxel = spacing / kVoxelsPerSpacing;
+        return BodyShape::mesh(std::make_shared<SignedDistanceField>(
+            loadMesh(scene, body), voxel, 3.0, kInteriorBandVoxels));
+    }
+    return BodyShape::box(body.size);
+}
+
+RigidBody BodyBuilder::build(std::size_t index) const {
+    const RigidBodySettings& body = scene_.bodies.at(index);
+    std::optional<TriangleMesh> mesh;
+    if (body.shape == "mesh")
+        mesh = loadMesh(scene_, body);
+    BodyShape shape = mesh ? BodyShape::mesh(std::make_shared<SignedDistanceField>(
+                                 *mesh, spacing_ / kVoxelsPerSpacing, 3.0, kInteriorBandVoxels))
+                           : shapeOf(scene_, body, spacing_);
+    const RigidPose pose{body.position, EulerRotation::fromDegrees(body.rotation)};
+    RigidBody rigid(body.name, sampleBoundary(body, mesh ? &*mesh : nullptr), std::move(shape),
+                    pose);
+    rigid.setSurfaceOffset(0.5 * spacing_);
+    const ContactMaterial material{body.restitution, body.friction};
+    rigid.setMaterials(material, material);
+    if (body.motion == "dynamic") {
+        const MassProperties mass = massOf(body, mesh ? &*mesh : nullptr);
+        rigid.makeDynamic(RigidBodyInertia(mass.mass, mass.inertia), mass.centreOfMass,
+                          {body.linearVelocity, body.angularVelocity});
+    } else if (body.motion == "kinematic") {
+        rigid.makeKinematic(kinematicMotionOf(body));
+    }
+    return rigid;
+}
+
+BoundaryParticles BodyBuilder::sampleBoundary(const RigidBodySettings& body,
+                                              const TriangleMesh* mesh) const {
+    // Half a spacing inside the surface, as for the container's walls: the water particles
+    // nearest the body rest one spacing from the layer, half a spacing outside the surface, so
+    // the water's volume, and the buoyancy its pressure gives, ends at the true surface.
+    const double half = 0.5 * spacing_;
+    BoundaryParticles particles;
+    if (body.shape == "sphere") {
+        particles = ShapeSampler::sampleSphere(body.radius - half, spacing_);
+    } else if (body.shape == "cylinder") {
+        particles = ShapeSampler::sampleCylinder(body.radius - half, body.height - spacing_,
+                                                 spacing_);
+    } else if (mesh) {
+        particles = ShapeSampler::sampleMesh(*mesh, spacing_);
+        pushOut(particles, -half);
+    } else {
+        particles = ShapeSampler::sampleSolidBox(body.size - Vec3d::Constant(spacing_), spacing_);
+    }
+    BoundarySampler::computeVolumes(particles, kernel_, spacing_);
+    return particles;
+}
+
+MassProperties BodyBuilder::massOf(const RigidBodySettings& body, const TriangleMesh* mesh) const {
+    if (body.shape == "sphere")
+        return MassProperties::ofSphere(body.radius, body.density);
+    if (body.shape == "cylinder")
+        return MassProperties::ofCylinder(body.radius, body.height, body.density);
+    if (mesh)
+        return MassProperties::ofMesh(*mesh, body.density);
+    return MassProperties::ofBox(body.size, body.density);
+}
+
+KinematicMotion BodyBuilder::kinematicMotionOf(const RigidBodySettings& body) const {
+    std::vector<KeyframedPath::Keyframe> keys;
+    for (const BodyKeyframe& key : scene_.keyframes)
+        if (key.body == body.name)
+            keys.push_back({key.time, key.position, EulerRotation::fromDegrees(key.rotation)});
+    if (keys.empty())
+        return KinematicMotion({body.position, EulerRotation::fromDegrees(body.rotation)},
+                               {body.linearVelocity, body.angularVelocity});
+    std::stable_sort(keys.begin(), keys.end(),
+                     [](const auto& a, const auto& b) { return a.time < b.time; });
+    try {
+        return KinematicMotion(KeyframedPath(std::move(keys)));
+    } catch (const Error& error) {
+        throw Error(ErrorKind::InvalidInput,
+                    bodyLabel(scene_, body) + ": its keyframes do not form a path: " +
+                        error.what());
+    }
+}
+
+} // namespace airtrap

@@ -1,0 +1,26 @@
+#pragma once
+// What the contact impulse of eq. 4 needs to know about the body a water particle touches,
+// gathered once per step: its material, and for a dynamic body the terms of its inverse
+// effective mass K(n, r) = 1/M + n · ((I⁻¹ (r × n)) × r).
+#include "core/Math.h"
+
+namespace airtrap {
+
+struct BodyContactTerms {
+    float restitution = 0.0f;
+    float friction = 0.0f;
+    bool dynamic = false; //!< whether the impulse moves the body too (K ≠ 0)
+    Vec3d centre = Vec3d::Zero();
+    double inverseMass = 0.0;
+    Mat3d inverseInertia = Mat3d::Zero(); //!< world frame
+
+    //! K(n, r) at world point x along unit `normal`, 1/kg; 0 for a body that cannot move.
+    double inverseEffectiveMass(const Vec3d& x, const Vec3d& normal) const {
+        if (!dynamic)
+            return 0.0;
+        const Vec3d r = x - centre;
+        return inverseMass + normal.dot((inverseInertia * r.cross(normal)).cross(r));
+    }
+};
+
+} // namespace airtrap

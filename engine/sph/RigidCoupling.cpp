@@ -1,0 +1,64 @@
+#include "sph/RigidCoupling.h"
+
+#include "rigid/RigidIntegrator.h"
+
+namespace airtrap {
+namespace {
+
+RigidContactSolver::Settings contactSettings(double spacing) {
+    RigidContactSolver::Settings settings;
+    // Half a spacing of look-ahead: a body falls less than that in one step at any speed the
+    // time-step limit allows (|v| Δt ≤ λ h |v| / (c + |v|) with c = 10 u_max).
+    settings.margin = 0.5 * spacing;
+    settings.allowedPenetration = 0.02 * spacing;
+    return settings;
+}
+
+} // namespace
+
+RigidCoupling::RigidCoupling(const Vec3d& gravity, double spacing)
+    : gravity_(gravity), contacts_(contactSettings(spacing)) {}
+
+void RigidCoupling::sumReactions(const std::vector<RigidBody>& bodies,
+                                 const BoundaryModel& boundary,
+                                 const std::vector<Vec3d>& reactions) {
+    forces_.assign(bodies.size(), Vec3d::Zero());
+    torques_.assign(bodies.size(), Vec3d::Zero());
+    const auto& bodyOf = boundary.bodyOf();
+    for (std::size_t b = 0; b < reactions.size(); ++b) {
+        const std::uint32_t body = bodyOf[b];
+        if (!bodies[body].isDynamic())
+            continue;
+        const Vec3d arm = boundary.positions()[b].cast<double>() - bodies[body].position();
+        forces_[body] += reactions[b];
+        torques_[body] += arm.cross(reactions[b]);
+    }
+}
+
+void RigidCoupling::advance(std::vector<RigidBody>& bodies, const BoundaryModel& boundary,
+                            const std::vector<Vec3d>& reactions, double dt) {
+    sumReactions(bodies, boundary, reactions);
+    std::vector<Vec3d> turnRates(bodies.size(), Vec3d::Zero());
+    std::vector<Vec3d> spinBeforeContacts(bodies.size(), Vec3d::Zero());
+    for (std::size_t k = 0; k < bodies.size(); ++k) {
+        if (!bodies[k].isDynamic())
+            continue;
+        RigidBodyState state = bodies[k].state();
+        turnRates[k] = RigidIntegrator::accelerate(state, bodies[k].inertia(), forces_[k],
+                                                   torques_[k], gravity_, dt);
+        spinBeforeContacts[k] = state.angularVelocity;
+        bodies[k].setState(state);
+    }
+    const std::vector<RigidVelocity> pushes = contacts_.solve(bodies, dt);
+    for (std::size_t k = 0; k < bodies.size(); ++k) {
+        if (!bodies[k].isDynamic())
+            continue;
+        RigidBodyState state = bodies[k].state();
+        // Contacts change ω after the mean was taken: turn with the mean plus that change.
+        const Vec3d turnRate = turnRates[k] + (state.angularVelocity - spinBeforeContacts[k]);
+        RigidIntegrator::advancePose(state, turnRate, pushes[k], dt);
+        bodies[k].setState(state);
+    }
+}
+
+} // namespace airtrap

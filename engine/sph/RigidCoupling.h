@@ -1,0 +1,41 @@
+#pragma once
+// The bodies' half of the two-way coupling (paper §3.3.1, eq. 4): each dynamic body takes the
+// water's reaction — the sum over its boundary particles of the pressure, friction and contact
+// impulses they gave the water, with the torque about its centre of mass — plus gravity, then
+// its contacts with other bodies, and moves. No buoyancy term: buoyancy is what the pressure on
+// the body's underside adds up to.
+#include "rigid/RigidBody.h"
+#include "rigid/RigidContactSolver.h"
+#include "sph/BoundaryModel.h"
+
+#include <vector>
+
+namespace airtrap {
+
+class RigidCoupling {
+public:
+    //! `spacing` (m) of the particles sets the contact solver's tolerances.
+    RigidCoupling(const Vec3d& gravity, double spacing);
+
+    //! Moves the dynamic bodies of `bodies` over `dt` (s). `reactions` holds the water's force
+    //! on each sorted boundary particle of `boundary` (InteractionPass::bodyReactions).
+    void advance(std::vector<RigidBody>& bodies, const BoundaryModel& boundary,
+                 const std::vector<Vec3d>& reactions, double dt);
+
+    //! The water's force (N) and torque (N·m, about the centre of mass) on each body in the last
+    //! advance(), for tests and statistics.
+    const std::vector<Vec3d>& lastForces() const { return forces_; }
+    const std::vector<Vec3d>& lastTorques() const { return torques_; }
+
+private:
+    //! Sums the reactions per body, in the boundary's sorted order so the sum is deterministic.
+    void sumReactions(const std::vector<RigidBody>& bodies, const BoundaryModel& boundary,
+                      const std::vector<Vec3d>& reactions);
+
+    Vec3d gravity_;
+    RigidContactSolver contacts_;
+    std::vector<Vec3d> forces_;
+    std::vector<Vec3d> torques_;
+};
+
+} // namespace airtrap
