@@ -1,5 +1,7 @@
 #include "sim/Baker.h"
 
+#include "sim/BodyBuilder.h"
+
 #include "cache/FrameCache.h"
 #include "core/Error.h"
 #include "scene/SceneJson.h"
@@ -60,7 +62,7 @@ FrameCache Baker::openCache() const {
     const bool continuing = options_.resume || options_.firstFrame > 1;
     FrameCache cache = continuing && FrameCache::isCache(options_.cacheDir)
                            ? FrameCache::open(options_.cacheDir)
-                           : FrameCache::create(options_.cacheDir, sceneToJson(scene_), hash,
+                           : FrameCache::create(options_.cacheDir, cachedSceneJson(), hash,
                                                 scene_.frames.fps, options_.overwrite);
     if (cache.manifest().parameterHash != hash && continuing && options_.adoptEditedScene)
         adoptEditedScene(cache);
@@ -87,7 +89,21 @@ void Baker::adoptEditedScene(FrameCache& cache) const {
                             solver[key].dump() +
                             "; the cached particles were made with the old value, so the bake "
                             "must start again from frame 1");
-    cache.replaceScene(sceneToJson(scene_), parameterHash(scene_));
+    const std::size_t cachedBodies = cache.manifest().scene.value("bodies", nlohmann::json::array()).size();
+    if (cachedBodies != scene_.bodies.size())
+        throw Error(ErrorKind::InvalidInput,
+                    options_.cacheDir + ": the scene now has " +
+                        std::to_string(scene_.bodies.size()) + " bodies, the cached frames " +
+                        std::to_string(cachedBodies) +
+                        "; the frames hold no state for a new body, so the bake must start again "
+                        "from frame 1");
+    cache.replaceScene(cachedSceneJson(), parameterHash(scene_));
+}
+
+nlohmann::json Baker::cachedSceneJson() const {
+    // The copy lives in the cache folder, not beside the scene file: mesh paths relative to the
+    // scene would point nowhere from there.
+    return sceneToJson(BodyBuilder::withAbsoluteMeshPaths(scene_));
 }
 
 std::unique_ptr<Simulation> Baker::startingPoint(FrameCache& cache) {

@@ -9,6 +9,7 @@
 
 #include <functional>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -73,6 +74,8 @@ private:
     //! Creates the cache, or opens it to continue, and checks it belongs to this scene.
     FrameCache openCache() const;
     //! Lets a continued bake go on under the edited scene, or explains why it cannot.
+    //! The scene as the cache's manifest keeps it.
+    nlohmann::json cachedSceneJson() const;
     void adoptEditedScene(FrameCache& cache) const;
     //! The simulation at the frame to continue from; on a fresh bake, frame 1, written.
     std::unique_ptr<Simulation> startingPoint(FrameCache& cache);

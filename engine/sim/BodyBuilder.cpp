@@ -45,6 +45,13 @@ std::string BodyBuilder::meshPath(const Scene& scene, const RigidBodySettings& b
     return (std::filesystem::path(scene.sourcePath).parent_path() / file).lexically_normal().string();
 }
 
+Scene BodyBuilder::withAbsoluteMeshPaths(Scene scene) {
+    for (RigidBodySettings& body : scene.bodies)
+        if (!body.mesh.empty())
+            body.mesh = std::filesystem::absolute(meshPath(scene, body)).lexically_normal().string();
+    return scene;
+}
+
 TriangleMesh BodyBuilder::loadMesh(const Scene& scene, const RigidBodySettings& body) {
     if (body.mesh.empty())
         throw Error(ErrorKind::InvalidInput,

@@ -22,6 +22,9 @@ public:
 
     //! The mesh file of a mesh body, resolved against the scene file's folder.
     static std::string meshPath(const Scene& scene, const RigidBodySettings& body);
+    //! `scene` with every mesh path made absolute, for copies of the scene kept elsewhere (the
+    //! cache's manifest).
+    static Scene withAbsoluteMeshPaths(Scene scene);
     //! Reads and checks a mesh body's mesh, scaled to metres, in its shape frame.
     static TriangleMesh loadMesh(const Scene& scene, const RigidBodySettings& body);
     //! The shape of any body, for contact and overlap tests; loads the mesh of a mesh body.

@@ -4,11 +4,15 @@
 #include "scene/ParameterCodec.h"
 #include "sim/SceneSetup.h"
 
+#include <cmath>
+
 namespace airtrap {
 namespace {
 
 //! Overlaps shallower than this share of a spacing are contact, not overlap.
 constexpr double kOverlapTolerance = 0.25;
+//! m; the boundary particles the surface is found from are single precision.
+constexpr double kDomainTolerance = 1e-6;
 
 std::string label(const Scene& scene, std::size_t index) {
     return "bodies[" + std::to_string(index) + "] (" +
@@ -20,6 +24,11 @@ std::string sceneryLabel(const Scene& scene, std::size_t index) {
         return "the container";
     return "obstacles[" + std::to_string(index - 1) + "] (" +
            ParameterCodec::formatValue(scene.obstacles[index - 1].name) + ")";
+}
+
+//! To the micrometre: the surface points carry single-precision noise.
+std::string rounded(double metres) {
+    return ParameterCodec::formatNumber(std::round(metres * 1e6) / 1e6);
 }
 
 //! Box around the solid's surface points of `body`.
@@ -47,11 +56,12 @@ void checkDomain(const Scene& scene, const RigidBody& body, std::size_t index,
     const Aabb box = surfaceBounds(body);
     const char* axes[] = {"x", "y", "z"};
     for (int axis = 0; axis < 3; ++axis)
-        if (box.min[axis] < domain.min[axis] || box.max[axis] > domain.max[axis]) {
+        if (box.min[axis] < domain.min[axis] - kDomainTolerance ||
+            box.max[axis] > domain.max[axis] + kDomainTolerance) {
             findings.errors.push_back(
                 label(scene, index) + " reaches outside the domain (container plus headroom) "
-                "along " + axes[axis] + ": it spans " + ParameterCodec::formatNumber(box.min[axis]) +
-                " to " + ParameterCodec::formatNumber(box.max[axis]) + " m, the domain " +
+                "along " + axes[axis] + ": it spans " + rounded(box.min[axis]) + " to " +
+                rounded(box.max[axis]) + " m, the domain " +
                 ParameterCodec::formatNumber(domain.min[axis]) + " to " +
                 ParameterCodec::formatNumber(domain.max[axis]) + " m");
             return;
