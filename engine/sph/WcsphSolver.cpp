@@ -112,11 +112,11 @@ StepReport WcsphSolver::step(SimulationState& state, double timeToFrameEnd) {
     }
     if (boundary_.hasDynamicBodies()) {
         StepPhases::Scope scope(phases_, StepPhases::Bodies);
-        moveDynamicBodies(inputs, state, report.timeStep);
+        report.nonFinite = !moveDynamicBodies(inputs, state, report.timeStep);
     }
     {
         StepPhases::Scope scope(phases_, StepPhases::Integrate);
-        report.nonFinite = integrate(fluid, report.timeStep);
+        report.nonFinite = integrate(fluid, report.timeStep) || report.nonFinite;
     }
     state.lastMaxAcceleration = report.maxAcceleration;
     state.lastTimeStep = report.timeStep;
@@ -147,13 +147,21 @@ void WcsphSolver::placeBodies(SimulationState& state) {
     boundary_.rebuild(bodies_);
 }
 
-void WcsphSolver::moveDynamicBodies(const InteractionInputs& inputs, SimulationState& state,
+bool WcsphSolver::moveDynamicBodies(const InteractionInputs& inputs, SimulationState& state,
                                     double dt) {
     passes_.bodyReactions(inputs, pressureOverDensity2_, contacts_, dt, reactions_);
     coupling_.advance(bodies_, boundary_, reactions_, dt);
-    for (std::size_t k = 0; k < state.bodies.size(); ++k)
-        if (bodies_[sceneryCount_ + k].isDynamic())
-            state.bodies[k] = bodies_[sceneryCount_ + k].state();
+    bool finite = true;
+    for (std::size_t k = 0; k < state.bodies.size(); ++k) {
+        const RigidBody& body = bodies_[sceneryCount_ + k];
+        if (!body.isDynamic())
+            continue;
+        state.bodies[k] = body.state();
+        const RigidBodyState& moved = state.bodies[k];
+        finite = finite && moved.position.allFinite() && moved.orientation.coeffs().allFinite() &&
+                 moved.linearVelocity.allFinite() && moved.angularVelocity.allFinite();
+    }
+    return finite;
 }
 
 void WcsphSolver::sortByCell(ParticleSet& fluid, StepReport& report) {

@@ -75,8 +75,9 @@ private:
     //! Copies the state's bodies into bodies_ (kinematic ones on their paths) and places their
     //! boundary particles.
     void placeBodies(SimulationState& state);
-    //! The water's reaction on the dynamic bodies, their contacts and motion over `dt`.
-    void moveDynamicBodies(const InteractionInputs& inputs, SimulationState& state, double dt);
+    //! The water's reaction on the dynamic bodies, their contacts and motion over `dt`; returns
+    //! false when a body's state is no longer finite.
+    bool moveDynamicBodies(const InteractionInputs& inputs, SimulationState& state, double dt);
 
     SolverSettings settings_;
     CubicSplineKernel kernel_;
