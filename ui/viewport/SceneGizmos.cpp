@@ -2,8 +2,6 @@
 
 #include "scene/InflowNozzle.h"
 
-#include <limits>
-
 namespace airtrap {
 
 namespace {
@@ -77,19 +75,22 @@ float SceneGizmos::hitDistance(const GizmoBox& box, const Ray& ray, const PickOp
 }
 
 SceneItem SceneGizmos::pick(const Ray& ray, const PickOptions& options) const {
-    SceneItem picked = SceneItem::none();
-    float nearest = std::numeric_limits<float>::max();
+    const std::optional<PickHit> nearest = hit(ray, options);
+    return nearest ? nearest->item : SceneItem::none();
+}
+
+std::optional<PickHit> SceneGizmos::hit(const Ray& ray, const PickOptions& options) const {
+    std::optional<PickHit> nearest;
     for (const GizmoBox& box : boxes_) {
         if (box.kind == GizmoBox::Kind::FluidBlock && !options.fluidBlocks) {
             continue;
         }
         const float distance = hitDistance(box, ray, options);
-        if (distance >= 0.0f && distance < nearest) {
-            nearest = distance;
-            picked = box.item;
+        if (distance >= 0.0f && (!nearest || distance < nearest->distance)) {
+            nearest = PickHit{box.item, distance};
         }
     }
-    return picked;
+    return nearest;
 }
 
 } // namespace airtrap

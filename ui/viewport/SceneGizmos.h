@@ -4,9 +4,11 @@
 #include "document/SceneItem.h"
 #include "scene/Scene.h"
 #include "viewport/GizmoBox.h"
+#include "viewport/PickHit.h"
 #include "viewport/Ray.h"
 
 #include <array>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -34,6 +36,8 @@ public:
     //! The gizmo nearest along the ray: solid boxes where the ray enters them, the container
     //! where the ray passes within the tolerance of one of its edges. None when nothing is hit.
     SceneItem pick(const Ray& ray, const PickOptions& options) const;
+    //! As pick(), with the distance along the ray, to compare with other things picked.
+    std::optional<PickHit> hit(const Ray& ray, const PickOptions& options) const;
 
     //! The twelve edges of the box [min, max] as pairs of corners.
     static std::array<std::pair<QVector3D, QVector3D>, 12> edgesOf(const QVector3D& min,

@@ -72,6 +72,8 @@ void ViewportWidget::setScene(const Scene& scene) {
     const float largestSide = float(domain_.size().maxCoeff());
     axes_.setLength(std::max(kMinAxesLength, kAxesShareOfDomain * largestSide));
     boxes_.setGizmos(gizmos_);
+    bodies_ = SceneBodies(scene, meshes_);
+    placeBodies();
     updateParticleLook();
     if (first) {
         frameAll();
@@ -82,6 +84,7 @@ void ViewportWidget::setScene(const Scene& scene) {
 void ViewportWidget::setSelection(const SceneItem& item) {
     selection_ = item;
     boxes_.setSelection(item);
+    bodyDrawable_.setSelection(item);
     update();
 }
 
@@ -89,7 +92,13 @@ void ViewportWidget::setFrame(std::shared_ptr<const FrameData> frame) {
     frame_ = std::move(frame);
     particles_.setFrame(frame_);
     boxes_.setFluidBlocksVisible(!frame_);
+    placeBodies();
     update();
+}
+
+void ViewportWidget::placeBodies() {
+    bodies_.showStates(frame_ ? &frame_->state.bodies : nullptr);
+    bodyDrawable_.setBodies(bodies_);
 }
 
 void ViewportWidget::frameAll() {
@@ -135,13 +144,22 @@ void ViewportWidget::updateParticleLook() {
 }
 
 SceneItem ViewportWidget::itemAt(const QPointF& position) const {
-    if (!hasScene_ || !showGizmos_) {
+    if (!hasScene_) {
         return SceneItem::none();
     }
-    SceneGizmos::PickOptions options;
-    options.fluidBlocks = !isPlayback();
-    options.metresPerPixelPerDepth = camera_.metresPerPixel(1.0f, size());
-    return gizmos_.pick(camera_.ray(position, size()), options);
+    const Ray ray = camera_.ray(position, size());
+    // Bodies are solids like the water, drawn with or without the gizmos.
+    std::optional<PickHit> nearest = bodies_.pick(ray);
+    if (showGizmos_) {
+        SceneGizmos::PickOptions options;
+        options.fluidBlocks = !isPlayback();
+        options.metresPerPixelPerDepth = camera_.metresPerPixel(1.0f, size());
+        const std::optional<PickHit> gizmo = gizmos_.hit(ray, options);
+        if (gizmo && (!nearest || gizmo->distance < nearest->distance)) {
+            nearest = gizmo;
+        }
+    }
+    return nearest ? nearest->item : SceneItem::none();
 }
 
 float ViewportWidget::aspectRatio() const {
@@ -150,8 +168,8 @@ float ViewportWidget::aspectRatio() const {
 
 // --- OpenGL --------------------------------------------------------------------------------------
 
-std::array<Drawable*, 4> ViewportWidget::drawables() {
-    return {&particles_, &grid_, &axes_, &boxes_};
+std::array<Drawable*, 5> ViewportWidget::drawables() {
+    return {&particles_, &bodyDrawable_, &grid_, &axes_, &boxes_};
 }
 
 void ViewportWidget::initializeGL() {
@@ -211,6 +229,9 @@ void ViewportWidget::drawScene() {
     context.gl.glEnable(GL_DEPTH_TEST);
     context.gl.glDepthFunc(GL_LEQUAL); // lines on box faces and the floor win ties
     particles_.draw(context);
+    if (hasScene_) {
+        bodyDrawable_.draw(context);
+    }
     if (hasScene_ && showGrid_) {
         grid_.draw(context);
     }

@@ -1,18 +1,22 @@
 #pragma once
-// The editor's 3D view: the scene's gizmos over a ground grid in edit mode, the water of a cached
-// frame in playback. Navigation is a turntable camera (left-drag orbit, middle- or shift-drag
-// pan, wheel zoom towards the cursor, F or a double-click on empty space frames everything); a
-// click without drag picks the gizmo under the cursor and reports it with itemPicked(). The
-// widget never selects by itself: whoever owns the selection answers with setSelection().
+// The editor's 3D view: the scene's gizmos and rigid bodies over a ground grid in edit mode, the
+// water and the bodies of a cached frame in playback. Navigation is a turntable camera (left-drag
+// orbit, middle- or shift-drag pan, wheel zoom towards the cursor, F or a double-click on empty
+// space frames everything); a click without drag picks the gizmo under the cursor and reports it
+// with itemPicked(). The widget never selects by itself: whoever owns the selection answers with
+// setSelection().
 #include "cache/FrameFile.h"
 #include "document/SceneItem.h"
 #include "scene/Scene.h"
 #include "viewport/AxesDrawable.h"
+#include "viewport/BodyDrawable.h"
+#include "viewport/BodyMeshCache.h"
 #include "viewport/BoxGizmoDrawable.h"
 #include "viewport/DragTracker.h"
 #include "viewport/GridDrawable.h"
 #include "viewport/OrbitCamera.h"
 #include "viewport/ParticleDrawable.h"
+#include "viewport/SceneBodies.h"
 #include "viewport/SceneGizmos.h"
 #include "viewport/SpeedLegend.h"
 
@@ -55,7 +59,9 @@ public:
     float particleRadius() const;
     //! The speed drawn white, m/s: the fixed scale, or the shown frame's fastest particle.
     float speedScale() const { return particles_.effectiveSpeedScale(); }
-    //! The gizmo under `position` (widget pixels), as a click there would pick it.
+    //! The scene's bodies where the view shows them now (scene or frame poses).
+    const SceneBodies& bodies() const { return bodies_; }
+    //! The gizmo or body under `position` (widget pixels), as a click there would pick it.
     SceneItem itemAt(const QPointF& position) const;
 
 public Q_SLOTS:
@@ -63,7 +69,8 @@ public Q_SLOTS:
     void setScene(const airtrap::Scene& scene);
     //! Highlights this item's gizmo (none: nothing).
     void setSelection(const airtrap::SceneItem& item);
-    //! Playback: draws the frame's particles instead of the fluid blocks; null returns to editing.
+    //! Playback: draws the frame's particles instead of the fluid blocks, and the bodies where the
+    //! frame has them; null returns to editing.
     void setFrame(std::shared_ptr<const airtrap::FrameData> frame);
     //! Aims the camera at the simulation domain (container plus headroom) and fits it in view.
     void frameAll();
@@ -95,8 +102,10 @@ protected:
     void keyPressEvent(QKeyEvent* event) override;
 
 private:
-    //! Everything drawn in 3D, in drawing order: opaque water first, lines over it.
-    std::array<Drawable*, 4> drawables();
+    //! Everything drawn in 3D, in drawing order: opaque water and bodies first, lines over them.
+    std::array<Drawable*, 5> drawables();
+    //! Puts the bodies where the shown frame has them (or at their scene poses) for drawing.
+    void placeBodies();
     //! Frees every GL object while the context is current (before it goes away).
     void releaseGl();
     void drawScene();
@@ -111,10 +120,13 @@ private:
     GridDrawable grid_;
     AxesDrawable axes_;
     BoxGizmoDrawable boxes_;
+    BodyDrawable bodyDrawable_;
     ParticleDrawable particles_;
     SpeedLegend legend_;
 
     SceneGizmos gizmos_;
+    SceneBodies bodies_;
+    BodyMeshCache meshes_;
     Aabb domain_;
     float sceneSpacing_ = 0.02f;
     float sceneDesignSpeed_ = 0.0f;
