@@ -119,15 +119,21 @@ QString SceneDocument::editParameter(const SceneItem& item, const std::string& k
 
 SceneItem SceneDocument::addElement(const std::string& section) {
     const SchemaSection& schema = sectionOf(section);
+    return addElement(section, nlohmann::json::object(),
+                      tr("Add %1").arg(QString::fromStdString(schema.elementLabel)));
+}
+
+SceneItem SceneDocument::addElement(const std::string& section, const nlohmann::json& values,
+                                    const QString& text) {
+    const SchemaSection& schema = sectionOf(section);
     const std::size_t index = schema.elementCount(scene_);
     Scene scratch;
     schema.resize(scratch, 1);
     nlohmann::json element;
     for (const BoundParameter& parameter : schema.parameters)
         element[parameter.declaration.key] = ParameterCodec::toJson(parameter.get(scratch, 0));
-    undoStack_->push(
-        new InsertElementCommand(*this, section, index, element,
-                                 tr("Add %1").arg(QString::fromStdString(schema.elementLabel))));
+    element.update(values);
+    undoStack_->push(new InsertElementCommand(*this, section, index, element, text));
     return SceneItem::elementItem(section, index);
 }
 

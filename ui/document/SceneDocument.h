@@ -60,6 +60,11 @@ public:
 
     //! Appends a default element to an array section; returns it.
     SceneItem addElement(const std::string& section);
+    //! Appends an element whose `values` (a JSON object of the section's keys) replace the
+    //! defaults, as one undo step named `text`; returns it. Values are trusted, as for
+    //! insertElement: callers build them from the schema's own keys.
+    SceneItem addElement(const std::string& section, const nlohmann::json& values,
+                         const QString& text);
     //! Inserts a copy of an element after it, named "<name> copy"; returns the copy.
     SceneItem duplicateElement(const SceneItem& item);
     //! Removes an element.

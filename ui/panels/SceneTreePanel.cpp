@@ -2,6 +2,7 @@
 
 #include "document/SceneDocument.h"
 #include "model/SceneTreeModel.h"
+#include "panels/BodyAddMenu.h"
 #include "scene/SceneSchema.h"
 
 #include <QHBoxLayout>
@@ -51,6 +52,14 @@ void SceneTreePanel::buildAddMenu() {
     for (const SchemaSection& section : SceneSchema::sections()) {
         if (!section.isArray)
             continue;
+        if (section.key == "bodies") {
+            // A body is mostly its shape: each shape is its own entry, with its own first size.
+            bodyMenu_ = new BodyAddMenu(document_, this);
+            bodyMenu_->menuAction()->setStatusTip(QString::fromStdString(section.help));
+            addMenu_->addMenu(bodyMenu_);
+            connect(bodyMenu_, &BodyAddMenu::bodyAdded, this, &SceneTreePanel::selectItem);
+            continue;
+        }
         QAction* action = addMenu_->addAction(QString::fromStdString(section.elementLabel));
         action->setObjectName(QStringLiteral("add_") + QString::fromStdString(section.key));
         action->setStatusTip(QString::fromStdString(section.help));

@@ -1,6 +1,7 @@
 #pragma once
 // The scene tree dock's content: the tree view over SceneTreeModel, with Add (one entry per kind
-// of element the schema declares), Duplicate and Remove, in a small toolbar and a context menu.
+// of element the schema declares; a submenu of shapes for bodies), Duplicate and Remove, in a
+// small toolbar and a context menu.
 #include "document/SceneItem.h"
 
 #include <QWidget>
@@ -11,6 +12,7 @@ class QTreeView;
 
 namespace airtrap {
 
+class BodyAddMenu;
 class SceneDocument;
 class SceneTreeModel;
 
@@ -22,8 +24,11 @@ public:
 
     QTreeView* view() const { return view_; }
     SceneTreeModel* model() const { return model_; }
-    //! The "Add" menu: one action per array section ("Fluid block", "Obstacle", …).
+    //! The "Add" menu: one action per array section ("Fluid block", "Obstacle", …), and the
+    //! Body submenu.
     QMenu* addMenu() const { return addMenu_; }
+    //! Add ▸ Body: one action per body shape.
+    BodyAddMenu* bodyMenu() const { return bodyMenu_; }
 
     SceneItem selectedItem() const;
 
@@ -49,6 +54,7 @@ private:
     SceneTreeModel* model_;
     QTreeView* view_;
     QMenu* addMenu_;
+    BodyAddMenu* bodyMenu_ = nullptr;
     QToolButton* duplicateButton_ = nullptr;
     QToolButton* removeButton_ = nullptr;
 };

@@ -4,6 +4,7 @@
 #include "controller/SimulationController.h"
 #include "core/Error.h"
 #include "document/SceneDocument.h"
+#include "panels/BodyAddMenu.h"
 #include "panels/ParameterPanel.h"
 #include "panels/SceneTreePanel.h"
 #include "scene/SceneJson.h"
@@ -215,6 +216,8 @@ void MainWindow::connectDocument() {
     });
     connect(document_.get(), &SceneDocument::modifiedChanged, this, &MainWindow::updateTitle);
     connect(document_.get(), &SceneDocument::filePathChanged, this, &MainWindow::updateTitle);
+    connect(sceneTree_->bodyMenu(), &BodyAddMenu::meshRefused, this,
+            [this](const QString& reason) { showError(tr("Cannot use this mesh"), reason); });
     connect(sceneTree_, &SceneTreePanel::editRefused, this, [this](const QString& reason) {
         statusBar()->showMessage(reason, 8000);
         log_->warning(reason);
