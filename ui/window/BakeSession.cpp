@@ -1,7 +1,9 @@
 #include "window/BakeSession.h"
 
 #include "controller/SimulationController.h"
+#include "core/Error.h"
 #include "document/SceneDocument.h"
+#include "scene/SceneValidator.h"
 #include "timeline/FrameLoader.h"
 #include "timeline/TimelineWidget.h"
 #include "window/EditorActions.h"
@@ -10,6 +12,7 @@
 
 #include <QAction>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QTimer>
 
 namespace airtrap {
@@ -61,7 +64,7 @@ void BakeSession::connectController() {
 // --- Actions ------------------------------------------------------------------------------------
 
 void BakeSession::bake() {
-    if (controller_.isBusy())
+    if (controller_.isBusy() || !acceptOverlaps())
         return;
     const QString dir = cacheDirectory_();
     if (lastCachedFrame() > 1 &&
@@ -215,6 +218,39 @@ void BakeSession::updateActions() {
         (idle && lastCachedFrame() > 0 && lastCachedFrame() < document_.scene().frames.endFrame));
     actions_.stop->setEnabled(state == State::Running || state == State::Paused);
     actions_.clearCache->setEnabled(idle && !cached_.empty());
+}
+
+bool BakeSession::acceptOverlaps() {
+    std::vector<std::string> warnings;
+    try {
+        warnings = validateScene(document_.scene());
+    } catch (const Error&) {
+        return true; // the bake fails at once with every error, in a dialog and the log
+    }
+    QStringList overlaps;
+    for (const std::string& warning : warnings)
+        if (warning.find("overlaps") != std::string::npos)
+            overlaps << QString::fromStdString(warning);
+    // Without a dialog the answer that loses nothing is to bake, as airtrap-cli does; the bake
+    // writes every warning to the log itself.
+    if (overlaps.isEmpty() || !interactive_)
+        return true;
+    QMessageBox box(QMessageBox::Warning, tr("Bodies overlap at the start"),
+                    tr("At t = 0 these overlap:"), QMessageBox::NoButton, dialogParent_);
+    box.setObjectName(QStringLiteral("overlapWarning"));
+    box.setInformativeText(QStringLiteral("• ") + overlaps.join(QStringLiteral("\n\n• ")) +
+                           tr("\n\nMove them apart, or bake anyway."));
+    QPushButton* bakeAnyway = box.addButton(tr("Bake anyway"), QMessageBox::AcceptRole);
+    bakeAnyway->setObjectName(QStringLiteral("bakeAnywayButton"));
+    box.setDefaultButton(box.addButton(QMessageBox::Cancel));
+    box.exec();
+    if (box.clickedButton() == bakeAnyway)
+        return true; // the bake logs the warnings as it starts
+    for (const QString& overlap : overlaps)
+        log_.warning(overlap);
+    log_.info(tr("Bake cancelled: bodies overlap at t = 0"));
+    Q_EMIT statusMessage(tr("Bake cancelled"));
+    return false;
 }
 
 bool BakeSession::confirm(const QString& title, const QString& question, bool defaultAnswer) {

@@ -71,6 +71,10 @@ private:
     void askAboutStaleFrames();
     void discardFramesAfter(int frame);
     bool confirm(const QString& title, const QString& question, bool defaultAnswer);
+    //! Runs the scene validator before a fresh bake. When bodies overlap the water, the scenery
+    //! or each other at t = 0 it lists the overlaps and asks "Bake anyway" or "Cancel"; false
+    //! when cancelled. Errors are left to the bake, which fails with them.
+    bool acceptOverlaps();
 
     SceneDocument& document_;
     SimulationController& controller_;
