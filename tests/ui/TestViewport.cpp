@@ -3,6 +3,7 @@
 // server: QOpenGLWidget crashes on the offscreen platform.
 #include "scene/SceneJson.h"
 #include "sim/Simulation.h"
+#include "viewport/BodyDrawable.h"
 #include "viewport/BoxGizmoDrawable.h"
 #include "viewport/SpeedLegend.h"
 #include "viewport/ViewportWidget.h"
@@ -48,6 +49,36 @@ bool isHighlight(const QColor& colour) {
     return std::abs(colour.red() - highlight.red()) < 40 &&
            std::abs(colour.green() - highlight.green()) < 50 &&
            std::abs(colour.blue() - highlight.blue()) < 50;
+}
+
+//! The dam break with a dynamic box body in the empty part of the tank.
+Scene damBreakWithBody() {
+    Scene scene = damBreak();
+    RigidBodySettings body;
+    body.name = "Crate";
+    body.motion = "dynamic";
+    body.position = Vec3d(1.6, 0.3, 0.2);
+    body.size = Vec3d(0.3, 0.3, 0.3);
+    scene.bodies.push_back(body);
+    return scene;
+}
+
+//! `base` at any shading: the bodies' shading scales all three channels alike, so green and blue
+//! keep their share of red.
+bool isShadedAs(const QColor& colour, const QColor& base) {
+    if (colour.red() < 40)
+        return false;
+    const auto share = [](int channel, int red) { return double(channel) / double(red); };
+    return std::abs(share(colour.green(), colour.red()) - share(base.green(), base.red())) < 0.08 &&
+           std::abs(share(colour.blue(), colour.red()) - share(base.blue(), base.red())) < 0.08;
+}
+
+bool isDynamicBody(const QColor& colour) {
+    return isShadedAs(colour, BodyDrawable::colourOf("dynamic"));
+}
+
+bool isSelectedBody(const QColor& colour) {
+    return isShadedAs(colour, BoxGizmoDrawable::highlightColour());
 }
 
 QVector3D toQt(const Vec3d& v) {
@@ -262,6 +293,90 @@ private Q_SLOTS:
         QVERIFY(countAround(viewport->grabFramebuffer(), spot, 3, ratio, isHighlight) >= 3);
         viewport->setSelection(SceneItem::none());
         QCOMPARE(countAround(viewport->grabFramebuffer(), spot, 3, ratio, isHighlight), 0);
+    }
+
+    void aBodyIsDrawnWhereItStandsAndHighlightedWhenSelected() {
+        const auto viewport = shownViewport();
+        QVERIFY(viewport);
+        const Scene scene = damBreakWithBody();
+        viewport->setScene(scene);
+        const qreal ratio = viewport->devicePixelRatio();
+        const QPointF body = project(*viewport, toQt(scene.bodies[0].position));
+        const QPointF empty = project(*viewport, QVector3D(2.1f, 0.3f, 0.2f));
+        QImage image = viewport->grabFramebuffer();
+        QCOMPARE(countAround(image, body, 4, ratio, isDynamicBody), 81);
+        QCOMPARE(countAround(image, empty, 4, ratio, isDynamicBody), 0);
+
+        viewport->setSelection(SceneItem::elementItem("bodies", 0));
+        image = viewport->grabFramebuffer();
+        QCOMPARE(countAround(image, body, 4, ratio, isDynamicBody), 0);
+        QCOMPARE(countAround(image, body, 4, ratio, isSelectedBody), 81);
+
+        // Without its body the spot shows the empty tank.
+        viewport->setSelection(SceneItem::none());
+        viewport->setScene(damBreak());
+        QCOMPARE(countAround(viewport->grabFramebuffer(), body, 4, ratio, isDynamicBody), 0);
+    }
+
+    void playbackDrawsABodyWhereTheFrameHasIt() {
+        const auto viewport = shownViewport();
+        QVERIFY(viewport);
+        const Scene scene = damBreakWithBody();
+        viewport->setScene(scene);
+        // The body has fallen and turned by frame N: its state holds the centre of mass.
+        FrameData frame;
+        RigidBodyState state;
+        state.position = Vec3d(2.0, 0.7, 0.2);
+        state.orientation = Quatd(Eigen::AngleAxisd(0.5, Vec3d::UnitZ()));
+        frame.state.bodies.push_back(state);
+        viewport->setFrame(std::make_shared<const FrameData>(frame));
+        const qreal ratio = viewport->devicePixelRatio();
+        const QPointF moved = project(*viewport, toQt(state.position));
+        const QPointF scenePose = project(*viewport, toQt(scene.bodies[0].position));
+        const QImage image = viewport->grabFramebuffer();
+        QCOMPARE(countAround(image, moved, 4, ratio, isDynamicBody), 81);
+        QCOMPARE(countAround(image, scenePose, 4, ratio, isDynamicBody), 0);
+
+        // Picking follows the drawn pose.
+        QCOMPARE(viewport->itemAt(moved), SceneItem::elementItem("bodies", 0));
+        QCOMPARE(viewport->itemAt(scenePose), SceneItem::none());
+
+        viewport->setFrame(nullptr);
+        QCOMPARE(countAround(viewport->grabFramebuffer(), scenePose, 4, ratio, isDynamicBody), 81);
+    }
+
+    void aMeshBodyFollowsItsCentreOfMassAndAMissingMeshDrawsNothing() {
+        const auto viewport = shownViewport();
+        QVERIFY(viewport);
+        Scene scene = damBreak();
+        RigidBodySettings bunny;
+        bunny.shape = "mesh";
+        bunny.mesh = AIRTRAP_SOURCE_DIR "/tests/data/bunny_lowres.obj";
+        bunny.meshScale = 2.0;
+        bunny.position = Vec3d(1.6, 0.3, 0.2);
+        RigidBodySettings missing = bunny;
+        missing.mesh = "/nonexistent/missing.obj";
+        scene.bodies = {bunny, missing};
+        viewport->setScene(scene);
+        const auto& bodies = viewport->bodies().bodies();
+        QVERIFY(bodies[0].solid);
+        QVERIFY(!bodies[1].solid);
+        QVERIFY(!viewport->grabFramebuffer().isNull());
+
+        // A dynamic mesh's state is its centre of mass, away from the mesh's own origin.
+        const Vec3d centre = bodies[0].centreOfMass;
+        QVERIFY(centre.norm() > 1e-3);
+        RigidBodyState state;
+        state.position = Vec3d(2.0, 0.5, 0.2);
+        FrameData frame;
+        frame.state.bodies = {state, state};
+        viewport->setFrame(std::make_shared<const FrameData>(frame));
+        const QVector3D origin = viewport->bodies().bodies()[0].pose.map(QVector3D());
+        QVERIFY((origin - toQt(state.position - centre)).length() < 1e-5f);
+        const QImage image = viewport->grabFramebuffer();
+        const qreal ratio = viewport->devicePixelRatio();
+        QVERIFY(countAround(image, project(*viewport, toQt(state.position)), 2, ratio,
+                            isDynamicBody) > 0);
     }
 
     void wheelZoomsAndFrameAllRestores() {
