@@ -68,13 +68,22 @@ void checkDomain(const Scene& scene, const RigidBody& body, std::size_t index,
         }
 }
 
+//! Whether water of `block` would start inside `body`: a point of the body's surface lies in
+//! the block, or the block's centre lies in the body (a block wholly inside it).
+bool overlapsWater(const RigidBody& body, const FluidBlock& block, double tolerance) {
+    const Aabb inner = Aabb{block.min, block.max}.expanded(-tolerance);
+    for (std::size_t k = 0; k < body.boundary().size(); ++k)
+        if (inner.contains(body.surfacePoint(k)))
+            return true;
+    return body.signedDistance(0.5 * (block.min + block.max)) < 0.0;
+}
+
 void checkWater(const Scene& scene, const RigidBody& body, std::size_t index,
                 BodyPlacementCheck::Findings& findings) {
-    const Aabb box = surfaceBounds(body);
+    const double tolerance = kOverlapTolerance * scene.solver.particleSpacing;
     for (std::size_t f = 0; f < scene.fluidBlocks.size(); ++f) {
         const FluidBlock& block = scene.fluidBlocks[f];
-        if ((box.max.array() <= block.min.array()).any() ||
-            (box.min.array() >= block.max.array()).any())
+        if (!overlapsWater(body, block, tolerance))
             continue;
         findings.warnings.push_back(
             label(scene, index) + " overlaps fluid_blocks[" + std::to_string(f) + "] (" +

@@ -150,6 +150,17 @@ private Q_SLOTS:
         QVERIFY2(!contains(all, "overlaps the container"), all.c_str());
     }
 
+    void aSphereBesideTheBlocksCornerDoesNotTouchIt() {
+        Scene scene = sceneWithABox();
+        scene.bodies[0].shape = "sphere";
+        scene.bodies[0].radius = 0.1;
+        // Its bounding box overlaps the pool's top corner edge; the sphere itself stays clear.
+        scene.bodies[0].position = Vec3d(0.58, 0.38, 0.5); // 11 cm from the edge
+        QVERIFY(validateScene(scene).empty());
+        scene.bodies[0].position = Vec3d(0.52, 0.32, 0.5); // now it dips into the water
+        QCOMPARE(validateScene(scene).size(), std::size_t(1));
+    }
+
     void restingOnTheFloorIsNotAnOverlap() {
         Scene scene = sceneWithABox();
         scene.bodies[0].position.y() = 0.1; // bottom face on the floor
