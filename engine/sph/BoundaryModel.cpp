@@ -6,24 +6,25 @@ BoundaryModel::BoundaryModel(const Aabb& gridDomain, float cellSize, float restD
     : restDensity_(restDensity), grid_(gridDomain, cellSize) {}
 
 void BoundaryModel::rebuild(const std::vector<RigidBody>& bodies) {
-    std::vector<Vec3f> worldPositions;
-    std::vector<Vec3f> worldNormals;
-    std::vector<Vec3f> worldVelocities;
-    std::vector<float> psi;
-    std::vector<std::uint32_t> bodyOf;
-    for (std::size_t index = 0; index < bodies.size(); ++index) {
-        const RigidBody& body = bodies[index];
-        const BoundaryParticles& local = body.boundary();
-        for (std::size_t b = 0; b < local.size(); ++b) {
-            const Vec3f x = body.toWorld(local.positions[b]);
-            worldPositions.push_back(x);
-            worldNormals.push_back(body.directionToWorld(local.normals[b]));
-            worldVelocities.push_back(body.velocityAt(x));
-            psi.push_back(restDensity_ * local.volumes[b]);
-            bodyOf.push_back(static_cast<std::uint32_t>(index));
-        }
+    std::size_t total = 0;
+    for (const RigidBody& body : bodies)
+        total += body.boundary().size();
+    const bool firstBuild = placedBodies_ != bodies.size() || unsortedPositions_.size() != total;
+    if (firstBuild) {
+        unsortedPositions_.resize(total);
+        unsortedNormals_.resize(total);
+        unsortedVelocities_.resize(total);
+        unsortedPsi_.resize(total);
+        unsortedBodyOf_.resize(total);
     }
-    grid_.build(worldPositions);
+    std::size_t first = 0;
+    for (std::size_t index = 0; index < bodies.size(); ++index) {
+        if (firstBuild || bodies[index].isMoving())
+            placeBody(bodies, index, first);
+        first += bodies[index].boundary().size();
+    }
+    placedBodies_ = bodies.size();
+    grid_.build(unsortedPositions_);
     const auto& order = grid_.order();
     const std::size_t n = order.size();
     positions_.resize(n);
@@ -33,13 +34,27 @@ void BoundaryModel::rebuild(const std::vector<RigidBody>& bodies) {
     bodyOf_.resize(n);
     for (std::size_t s = 0; s < n; ++s) {
         const std::uint32_t from = order[s];
-        positions_[s] = worldPositions[from];
-        normals_[s] = worldNormals[from];
-        velocities_[s] = worldVelocities[from];
-        psi_[s] = psi[from];
-        bodyOf_[s] = bodyOf[from];
+        positions_[s] = unsortedPositions_[from];
+        normals_[s] = unsortedNormals_[from];
+        velocities_[s] = unsortedVelocities_[from];
+        psi_[s] = unsortedPsi_[from];
+        bodyOf_[s] = unsortedBodyOf_[from];
     }
     gatherTerms(bodies);
+}
+
+void BoundaryModel::placeBody(const std::vector<RigidBody>& bodies, std::size_t index,
+                              std::size_t first) {
+    const RigidBody& body = bodies[index];
+    const BoundaryParticles& local = body.boundary();
+    for (std::size_t b = 0; b < local.size(); ++b) {
+        const Vec3f x = body.toWorld(local.positions[b]);
+        unsortedPositions_[first + b] = x;
+        unsortedNormals_[first + b] = body.directionToWorld(local.normals[b]);
+        unsortedVelocities_[first + b] = body.velocityAt(x);
+        unsortedPsi_[first + b] = restDensity_ * local.volumes[b];
+        unsortedBodyOf_[first + b] = static_cast<std::uint32_t>(index);
+    }
 }
 
 void BoundaryModel::gatherTerms(const std::vector<RigidBody>& bodies) {
@@ -61,7 +76,12 @@ void BoundaryModel::gatherTerms(const std::vector<RigidBody>& bodies) {
 std::size_t BoundaryModel::allocatedBytes() const {
     return grid_.allocatedBytes() +
            (positions_.capacity() + normals_.capacity() + velocities_.capacity()) * sizeof(Vec3f) +
-           psi_.capacity() * sizeof(float) + bodyOf_.capacity() * sizeof(std::uint32_t);
+           psi_.capacity() * sizeof(float) + bodyOf_.capacity() * sizeof(std::uint32_t) +
+           (unsortedPositions_.capacity() + unsortedNormals_.capacity() +
+            unsortedVelocities_.capacity()) *
+               sizeof(Vec3f) +
+           unsortedPsi_.capacity() * sizeof(float) +
+           unsortedBodyOf_.capacity() * sizeof(std::uint32_t);
 }
 
 } // namespace airtrap

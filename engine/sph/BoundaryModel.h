@@ -34,6 +34,9 @@ public:
     std::size_t allocatedBytes() const;
 
 private:
+    //! Writes the world-space data of `bodies[index]`'s particles into the unsorted arrays from
+    //! `first` on.
+    void placeBody(const std::vector<RigidBody>& bodies, std::size_t index, std::size_t first);
     void gatherTerms(const std::vector<RigidBody>& bodies);
 
     float restDensity_;
@@ -44,6 +47,14 @@ private:
     std::vector<float> psi_;
     std::vector<std::uint32_t> bodyOf_;
     std::vector<BodyContactTerms> terms_;
+    // The same in the bodies' order, before sorting; kept between rebuilds so that static
+    // bodies, whose particles never move, are placed once.
+    std::vector<Vec3f> unsortedPositions_;
+    std::vector<Vec3f> unsortedNormals_;
+    std::vector<Vec3f> unsortedVelocities_;
+    std::vector<float> unsortedPsi_;
+    std::vector<std::uint32_t> unsortedBodyOf_;
+    std::size_t placedBodies_ = 0; //!< how many bodies the unsorted arrays were built for
     bool hasDynamicBodies_ = false;
 };
 
