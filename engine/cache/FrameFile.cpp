@@ -1,7 +1,9 @@
 #include "cache/FrameFile.h"
 
 #include "cache/ByteReader.h"
+#include "cache/BubbleChunk.h"
 #include "cache/ByteWriter.h"
+#include "cache/RigidBodyRecord.h"
 #include "core/Error.h"
 
 #include <algorithm>
@@ -26,7 +28,7 @@ constexpr char kStateTag[] = "STAT";
 constexpr char kStatsTag[] = "FSTA";
 constexpr char kAttributeTag[] = "PATT";
 constexpr char kBodyTag[] = "BODY";
-constexpr std::size_t kBodyRecordSize = 13 * sizeof(double); // X, q (w, x, y, z), V, ω
+constexpr std::size_t kBodyRecordSize = RigidBodyRecord::kSize;
 
 [[noreturn]] void corrupt(const std::string& path, const std::string& what) {
     throw Error(ErrorKind::CacheCorrupt, path + ": " + what);
@@ -81,26 +83,19 @@ void writeAttributeChunk(ByteWriter& out, const ParticleAttribute& attribute, st
     endChunk(out, at);
 }
 
-void writeVec3(ByteWriter& out, const Vec3d& v) {
-    out.f64(v.x());
-    out.f64(v.y());
-    out.f64(v.z());
-}
-
 //! Written only when there are bodies, so frames of body-free scenes stay byte-identical to
 //! those written before the chunk existed.
 void writeBodyChunk(ByteWriter& out, const std::vector<RigidBodyState>& bodies) {
     const std::size_t at = beginChunk(out, kBodyTag);
     out.u32(static_cast<std::uint32_t>(bodies.size()));
-    for (const RigidBodyState& body : bodies) {
-        writeVec3(out, body.position);
-        out.f64(body.orientation.w()); // w first, as `info --json` prints it
-        out.f64(body.orientation.x());
-        out.f64(body.orientation.y());
-        out.f64(body.orientation.z());
-        writeVec3(out, body.linearVelocity);
-        writeVec3(out, body.angularVelocity);
-    }
+    for (const RigidBodyState& body : bodies)
+        RigidBodyRecord::write(out, body);
+    endChunk(out, at);
+}
+
+void writeBubbleChunk(ByteWriter& out, const SimulationState& state) {
+    const std::size_t at = beginChunk(out, BubbleChunk::kTag);
+    BubbleChunk::write(out, state.bubbles, state.nextBubbleId);
     endChunk(out, at);
 }
 
@@ -248,23 +243,6 @@ void readStatsChunk(const Chunk& chunk, FrameStats& stats, const std::string& pa
     }
 }
 
-Vec3d readVec3(ByteReader& in) {
-    const double x = in.f64();
-    const double y = in.f64();
-    return {x, y, in.f64()}; // named reads: argument evaluation order is unspecified
-}
-
-RigidBodyState readBody(ByteReader& in) {
-    RigidBodyState body;
-    body.position = readVec3(in);
-    const double w = in.f64();
-    const Vec3d xyz = readVec3(in);
-    body.orientation = Quatd(w, xyz.x(), xyz.y(), xyz.z());
-    body.linearVelocity = readVec3(in);
-    body.angularVelocity = readVec3(in);
-    return body;
-}
-
 //! Unlike STAT, the body has no room for appended fields: its size is checked exactly, so a
 //! damaged count is caught. Per-body fields of a later version go in a chunk of their own.
 void readBodyChunk(const Chunk& chunk, std::vector<RigidBodyState>& bodies,
@@ -277,7 +255,7 @@ void readBodyChunk(const Chunk& chunk, std::vector<RigidBodyState>& bodies,
                           std::to_string(expected) + " for " + std::to_string(count) + " bodies");
     bodies.reserve(count);
     for (std::uint32_t i = 0; i < count; ++i)
-        bodies.push_back(readBody(in));
+        bodies.push_back(RigidBodyRecord::read(in));
 }
 
 void readAttributeChunk(const Chunk& chunk, std::map<std::string, AttributeChunk>& attributes,
@@ -334,6 +312,7 @@ void readChunks(const std::vector<Chunk>& chunks, FrameData& frame, const std::s
     int stateChunks = 0;
     int statsChunks = 0;
     int bodyChunks = 0;
+    int bubbleChunks = 0;
     for (const Chunk& chunk : chunks) {
         if (chunk.tag == kStateTag) {
             particleCount = readStateChunk(chunk, frame.state, path);
@@ -347,6 +326,11 @@ void readChunks(const std::vector<Chunk>& chunks, FrameData& frame, const std::s
             if (++bodyChunks > 1)
                 corrupt(path, "more than one BODY chunk");
             readBodyChunk(chunk, frame.state.bodies, path);
+        } else if (chunk.tag == BubbleChunk::kTag) {
+            if (++bubbleChunks > 1)
+                corrupt(path, "more than one BUBL chunk");
+            BubbleChunk::read(chunk.data, chunk.size, path, frame.state.bubbles,
+                              frame.state.nextBubbleId);
         }
     }
     if (stateChunks != 1 || statsChunks != 1)
@@ -376,7 +360,8 @@ std::vector<std::uint8_t> encodeFrame(const SimulationState& state, const FrameS
     // attributes() only hands out pointers; it is non-const because writers use the same views.
     auto& fluid = const_cast<ParticleSet&>(state.fluid);
     const std::vector<ParticleAttribute> attributes = fluid.attributes();
-    std::size_t estimate = kFrameHeaderSize + 1024 + state.bodies.size() * kBodyRecordSize;
+    std::size_t estimate = kFrameHeaderSize + 1024 + state.bodies.size() * kBodyRecordSize +
+                           state.bubbles.size() * BubbleChunk::kRecordSize;
     for (const ParticleAttribute& attribute : attributes)
         estimate += kChunkHeaderSize + 64 + fluid.size() * attributeElementSize(attribute.type);
     std::vector<std::uint8_t> bytes(kFrameHeaderSize); // header filled once the payload is known
@@ -388,6 +373,8 @@ std::vector<std::uint8_t> encodeFrame(const SimulationState& state, const FrameS
         writeAttributeChunk(out, attribute, fluid.size());
     if (!state.bodies.empty())
         writeBodyChunk(out, state.bodies);
+    if (BubbleChunk::needed(state.bubbles, state.nextBubbleId))
+        writeBubbleChunk(out, state);
     writeHeader(bytes, state.frame);
     return bytes;
 }

@@ -1,5 +1,6 @@
 #pragma once
 // Everything needed to continue a bake bit-for-bit: the cache stores exactly this per frame.
+#include "bubbles/BubbleState.h"
 #include "rigid/RigidBodyState.h"
 #include "sph/ParticleSet.h"
 
@@ -19,6 +20,9 @@ struct SimulationState {
     //! Pose and velocities of every rigid body, in the scene's body order; empty when the scene
     //! has none (and in frames written before bodies were cached).
     std::vector<RigidBodyState> bodies;
+    //! The trapped air bubbles alive at the end of the frame, oldest first.
+    std::vector<BubbleState> bubbles;
+    std::uint32_t nextBubbleId = 0;
 
     bool operator==(const SimulationState& other) const = default;
 };

@@ -42,6 +42,24 @@ std::vector<RigidBodyState> threeBodies() {
     return bodies;
 }
 
+//! Two bubbles, one with a negative zero and a denormal the BUBL chunk must keep.
+std::vector<BubbleState> twoBubbles() {
+    std::vector<BubbleState> bubbles(2);
+    bubbles[0].id = 3;
+    bubbles[0].birthFrame = 7;
+    bubbles[0].radius = 0.015;
+    bubbles[0].body.position = Vec3d(0.2, 0.1, 0.3);
+    bubbles[0].age = 0.25;
+    bubbles[0].areaFractionInWater = 0.8;
+    bubbles[0].pocketVolume = 2.5e-5;
+    bubbles[1].id = 16;
+    bubbles[1].birthFrame = 9;
+    bubbles[1].radius = 0.03;
+    bubbles[1].body.linearVelocity = Vec3d(-0.0, std::numeric_limits<double>::denorm_min(), 0.2);
+    bubbles[1].floatingTime = 1.0 / 3.0;
+    return bubbles;
+}
+
 //! A hand-written state and stats (no random distributions, whose output differs between
 //! standard libraries) for the golden-bytes test.
 SimulationState fixedState() {
@@ -294,6 +312,36 @@ private Q_SLOTS:
         QCOMPARE(longer.size(), bytes.size() + 12 + 4 + 3 * 13 * 8);
         QVERIFY(std::equal(bytes.begin() + kFrameHeaderSize, bytes.end(),
                            longer.begin() + kFrameHeaderSize));
+    }
+
+    void bubblesRoundTripIsExact() {
+        SimulationState state = randomState(9, 20, 3);
+        state.bodies = threeBodies();
+        state.bubbles = twoBubbles();
+        state.nextBubbleId = 17;
+        const std::vector<std::uint8_t> bytes = encodeFrame(state, randomStats(9));
+        const FrameData decoded = decodeFrame(bytes, kPath);
+        QVERIFY(decoded.state == state);
+        QCOMPARE(decoded.state.nextBubbleId, 17u);
+        QVERIFY(std::signbit(decoded.state.bubbles[1].body.linearVelocity.x()));
+        QVERIFY(encodeFrame(decoded.state, decoded.stats) == bytes);
+        // BUBL follows BODY: 8 bytes of count and next id, then 152 per bubble.
+        const std::size_t at = lastChunkOffset(bytes);
+        QCOMPARE(std::memcmp(bytes.data() + at, "BUBL", 4), 0);
+        std::uint64_t length = 0;
+        std::memcpy(&length, bytes.data() + at + 4, 8);
+        QCOMPARE(length, std::uint64_t(8 + 2 * 152));
+    }
+
+    void corruptBubbleChunkDetected() {
+        SimulationState state = randomState(9, 4, 3);
+        state.bubbles = twoBubbles();
+        std::vector<std::uint8_t> bytes = encodeFrame(state, FrameStats{});
+        put<std::uint32_t>(bytes, lastChunkOffset(bytes) + 12, 3); // count says 3, holds 2
+        resealFrame(bytes);
+        const QString message = corruptMessage(bytes);
+        QVERIFY2(message.contains("chunk BUBL is 312 bytes, expected 464 for 3 bubbles"),
+                 qPrintable(message));
     }
 
     void headerLayoutIsDocumented() {
