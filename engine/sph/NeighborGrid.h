@@ -9,6 +9,7 @@
 #include "core/Math.h"
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace airtrap {
@@ -62,6 +63,10 @@ public:
         return cellStart_[linear + 1] - cellStart_[linear];
     }
     std::size_t cellTotal() const { return cellStart_.size() - 1; }
+    //! The sorted indices [first, second) of the points in a cell.
+    std::pair<std::uint32_t, std::uint32_t> cellRange(int linear) const {
+        return {cellStart_[linear], cellStart_[linear + 1]};
+    }
     std::size_t allocatedBytes() const;
 
 private:
