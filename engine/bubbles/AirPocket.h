@@ -8,9 +8,9 @@
 namespace airtrap {
 
 struct AirPocket {
-    std::vector<int> cells;          //!< linear indices into the neighbour grid
-    Vec3d centre = Vec3d::Zero();    //!< m, mean of the cells' centres
-    double volume = 0.0;             //!< m³, cells × cell size³
+    std::vector<int> cells;       //!< linear indices into the neighbour grid
+    Vec3d centre = Vec3d::Zero(); //!< m, mean of the cells' centres
+    double volume = 0.0;          //!< m³, cells × cell size³
 };
 
 } // namespace airtrap

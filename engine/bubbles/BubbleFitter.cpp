@@ -15,8 +15,7 @@ std::optional<FittedBubble> BubbleFitter::fit(const AirPocket& pocket, const Nei
     // A water particle stands for the half spacing around it: the bubble's surface keeps clear
     // of that.
     const double clearance = 0.5 * spacing_;
-    const double nearest =
-        nearestWater(pocket.centre, equalVolume + clearance, grid, positions);
+    const double nearest = nearestWater(pocket.centre, equalVolume + clearance, grid, positions);
     const double radius = std::min(equalVolume, nearest - clearance);
     if (radius < minRadius_)
         return std::nullopt;

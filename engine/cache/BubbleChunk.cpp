@@ -29,9 +29,9 @@ void BubbleChunk::read(const std::uint8_t* data, std::size_t size, const std::st
     // Exact, like BODY: a damaged count must not pass for a newer layout.
     const std::uint64_t expected = 2 * sizeof(std::uint32_t) + std::uint64_t(count) * kRecordSize;
     if (size != expected)
-        throw Error(ErrorKind::CacheCorrupt,
-                    path + ": chunk BUBL is " + std::to_string(size) + " bytes, expected " +
-                        std::to_string(expected) + " for " + std::to_string(count) + " bubbles");
+        throw Error(ErrorKind::CacheCorrupt, path + ": chunk BUBL is " + std::to_string(size) +
+                                                 " bytes, expected " + std::to_string(expected) +
+                                                 " for " + std::to_string(count) + " bubbles");
     bubbles.clear();
     bubbles.reserve(count);
     for (std::uint32_t i = 0; i < count; ++i) {

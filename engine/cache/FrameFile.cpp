@@ -1,7 +1,7 @@
 #include "cache/FrameFile.h"
 
-#include "cache/ByteReader.h"
 #include "cache/BubbleChunk.h"
+#include "cache/ByteReader.h"
 #include "cache/ByteWriter.h"
 #include "cache/RigidBodyRecord.h"
 #include "core/Error.h"

@@ -110,8 +110,8 @@ double BodyShape::cylinderDistance(const Vec3d& x) const {
 
 Vec3d BodyShape::cylinderNormal(const Vec3d& x) const {
     const double planar = std::hypot(x.x(), x.z());
-    const Vec3d radialDirection = planar > 0.0 ? Vec3d(x.x() / planar, 0.0, x.z() / planar)
-                                               : Vec3d::UnitX();
+    const Vec3d radialDirection =
+        planar > 0.0 ? Vec3d(x.x() / planar, 0.0, x.z() / planar) : Vec3d::UnitX();
     const Vec3d axialDirection = signedAxis(1, x.y());
     const double radial = planar - size_.x();
     const double axial = std::abs(x.y()) - size_.y();
@@ -125,8 +125,8 @@ double BodyShape::tankDistance(const Vec3d& x) const {
     double clearance = x.y() - tankInside_.min.y();
     if (x.y() <= tankInside_.max.y())
         for (int axis : {0, 2})
-            clearance = std::min({clearance, x[axis] - tankInside_.min[axis],
-                                  tankInside_.max[axis] - x[axis]});
+            clearance = std::min(
+                {clearance, x[axis] - tankInside_.min[axis], tankInside_.max[axis] - x[axis]});
     return clearance;
 }
 

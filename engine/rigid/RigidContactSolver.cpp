@@ -99,9 +99,9 @@ void RigidContactSolver::prepare(const std::vector<RigidBody>& bodies, double dt
         const double inverse = inverseMassAlong(a, a.state(), contact.point, contact.normal) +
                                inverseMassAlong(b, b.state(), contact.point, contact.normal);
         contact.normalMass = inverse > 0.0 ? 1.0 / inverse : 0.0;
-        const double approach = (pointVelocity(a.state(), contact.point) -
-                                 pointVelocity(b.state(), contact.point))
-                                    .dot(contact.normal);
+        const double approach =
+            (pointVelocity(a.state(), contact.point) - pointVelocity(b.state(), contact.point))
+                .dot(contact.normal);
         const double restitution = contact.restitutionSpeed;
         // A gap closes this step at most: the bodies may approach until they touch
         // (speculative contact, Catto 2013); an overlap or touch bounces with ε.
@@ -180,10 +180,9 @@ std::vector<RigidVelocity> RigidContactSolver::solvePositions(const std::vector<
             if (contact.normalMass == 0.0 || excess <= 0.0)
                 continue;
             const double target = settings_.correction * excess / dt;
-            const double speed =
-                (pointVelocity(push[contact.a], contact.point) -
-                 pointVelocity(push[contact.b], contact.point))
-                    .dot(contact.normal);
+            const double speed = (pointVelocity(push[contact.a], contact.point) -
+                                  pointVelocity(push[contact.b], contact.point))
+                                     .dot(contact.normal);
             const double accumulated =
                 std::max(contact.pushImpulse + contact.normalMass * (target - speed), 0.0);
             const Vec3d impulse = (accumulated - contact.pushImpulse) * contact.normal;

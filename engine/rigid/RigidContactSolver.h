@@ -44,16 +44,16 @@ public:
 
 private:
     struct Contact {
-        std::size_t a = 0;         //!< the body the normal points towards
-        std::size_t b = 0;         //!< the body the normal points out of
+        std::size_t a = 0; //!< the body the normal points towards
+        std::size_t b = 0; //!< the body the normal points out of
         Vec3d point = Vec3d::Zero();
         Vec3d normal = Vec3d::Zero();
-        double depth = 0.0;        //!< m, > 0 when overlapping
+        double depth = 0.0;            //!< m, > 0 when overlapping
         double restitutionSpeed = 0.0; //!< m/s, the target separation speed from ε
         double friction = 0.0;
-        double normalMass = 0.0;   //!< 1 / (K_A + K_B) along the normal
-        double normalImpulse = 0.0;  //!< accumulated
-        double pushImpulse = 0.0;    //!< accumulated split impulse
+        double normalMass = 0.0;              //!< 1 / (K_A + K_B) along the normal
+        double normalImpulse = 0.0;           //!< accumulated
+        double pushImpulse = 0.0;             //!< accumulated split impulse
         Vec3d tangentImpulse = Vec3d::Zero(); //!< accumulated
     };
 

@@ -28,8 +28,8 @@ public:
     //! The pose half: X ← X + Δt (V + push.linear), q ← exp((turnRate + push.angular) Δt) q,
     //! with the body-frame angular velocity kept. `push` is a contact solver's position-only
     //! correction (RigidContactSolver).
-    static void advancePose(RigidBodyState& state, const Vec3d& turnRate,
-                            const RigidVelocity& push, double dt);
+    static void advancePose(RigidBodyState& state, const Vec3d& turnRate, const RigidVelocity& push,
+                            double dt);
 
     //! q ← exp(ω Δt) q, renormalised: the exact rotation for ω constant over the step
     //! (RotationVector), so the orientation neither drifts off unit length (as q + ½Δt ω q does)

@@ -78,20 +78,20 @@ struct InflowEmitterSettings {
 //! along its keyframes, or at constant velocity when it has none).
 struct RigidBodySettings {
     std::string name = "Body";
-    std::string shape = "box";               //!< "box", "sphere", "cylinder" or "mesh"
-    std::string motion = "dynamic";          //!< "static", "dynamic" or "kinematic"
-    Vec3d position = Vec3d(0.5, 0.5, 0.5);   //!< m, centre of the shape (a mesh's own origin)
-    Vec3d rotation = Vec3d::Zero();          //!< degrees about x, then y, then z (world axes)
-    Vec3d size = Vec3d(0.1, 0.1, 0.1);       //!< m, edge lengths of a box
-    double radius = 0.05;                    //!< m, of a sphere or cylinder
-    double height = 0.1;                     //!< m, of a cylinder, along its local y axis
-    std::string mesh;                        //!< mesh file, relative to the scene file
-    double meshScale = 1.0;                  //!< file units → m
-    double density = 500.0;                  //!< kg/m³
-    Vec3d linearVelocity = Vec3d::Zero();    //!< m/s at t = 0 (dynamic) or throughout (kinematic)
-    Vec3d angularVelocity = Vec3d::Zero();   //!< rad/s, world axes, likewise
-    double restitution = 0.0;                //!< ε of contacts with water and other bodies
-    double friction = 0.4;                   //!< Coulomb μ of contacts with water and bodies
+    std::string shape = "box";             //!< "box", "sphere", "cylinder" or "mesh"
+    std::string motion = "dynamic";        //!< "static", "dynamic" or "kinematic"
+    Vec3d position = Vec3d(0.5, 0.5, 0.5); //!< m, centre of the shape (a mesh's own origin)
+    Vec3d rotation = Vec3d::Zero();        //!< degrees about x, then y, then z (world axes)
+    Vec3d size = Vec3d(0.1, 0.1, 0.1);     //!< m, edge lengths of a box
+    double radius = 0.05;                  //!< m, of a sphere or cylinder
+    double height = 0.1;                   //!< m, of a cylinder, along its local y axis
+    std::string mesh;                      //!< mesh file, relative to the scene file
+    double meshScale = 1.0;                //!< file units → m
+    double density = 500.0;                //!< kg/m³
+    Vec3d linearVelocity = Vec3d::Zero();  //!< m/s at t = 0 (dynamic) or throughout (kinematic)
+    Vec3d angularVelocity = Vec3d::Zero(); //!< rad/s, world axes, likewise
+    double restitution = 0.0;              //!< ε of contacts with water and other bodies
+    double friction = 0.4;                 //!< Coulomb μ of contacts with water and bodies
 };
 
 //! A pose a kinematic body passes through; a body's keyframes are joined by straight lines and

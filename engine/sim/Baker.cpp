@@ -1,10 +1,9 @@
 #include "sim/Baker.h"
 
-#include "sim/BodyBuilder.h"
-
 #include "cache/FrameCache.h"
 #include "core/Error.h"
 #include "scene/SceneJson.h"
+#include "sim/BodyBuilder.h"
 #include "sim/Simulation.h"
 
 #include <chrono>
@@ -78,7 +77,7 @@ void Baker::adoptEditedScene(FrameCache& cache) const {
     // Particle mass and the kernel follow from these; cached particles made with other values
     // would be out of balance with the new ones from the first step.
     static const char* const kFixedForParticles[] = {"particle_spacing", "support_factor",
-                                                      "rest_density"};
+                                                     "rest_density"};
     const nlohmann::json& cachedSolver = cache.manifest().scene["solver"];
     const nlohmann::json solver = sceneToJson(scene_)["solver"];
     for (const char* key : kFixedForParticles)
@@ -89,7 +88,8 @@ void Baker::adoptEditedScene(FrameCache& cache) const {
                             solver[key].dump() +
                             "; the cached particles were made with the old value, so the bake "
                             "must start again from frame 1");
-    const std::size_t cachedBodies = cache.manifest().scene.value("bodies", nlohmann::json::array()).size();
+    const std::size_t cachedBodies =
+        cache.manifest().scene.value("bodies", nlohmann::json::array()).size();
     if (cachedBodies != scene_.bodies.size())
         throw Error(ErrorKind::InvalidInput,
                     options_.cacheDir + ": the scene now has " +

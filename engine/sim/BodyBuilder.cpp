@@ -42,13 +42,16 @@ std::string BodyBuilder::meshPath(const Scene& scene, const RigidBodySettings& b
     const std::filesystem::path file(body.mesh);
     if (file.is_absolute() || scene.sourcePath.empty())
         return file.string();
-    return (std::filesystem::path(scene.sourcePath).parent_path() / file).lexically_normal().string();
+    return (std::filesystem::path(scene.sourcePath).parent_path() / file)
+        .lexically_normal()
+        .string();
 }
 
 Scene BodyBuilder::withAbsoluteMeshPaths(Scene scene) {
     for (RigidBodySettings& body : scene.bodies)
         if (!body.mesh.empty())
-            body.mesh = std::filesystem::absolute(meshPath(scene, body)).lexically_normal().string();
+            body.mesh =
+                std::filesystem::absolute(meshPath(scene, body)).lexically_normal().string();
     return scene;
 }
 
@@ -70,8 +73,8 @@ BodyShape BodyBuilder::shapeOf(const Scene& scene, const RigidBodySettings& body
         return BodyShape::cylinder(body.radius, body.height);
     if (body.shape == "mesh") {
         const double voxel = spacing / kVoxelsPerSpacing;
-        return BodyShape::mesh(std::make_shared<SignedDistanceField>(
-            loadMesh(scene, body), voxel, 3.0, kInteriorBandVoxels));
+        return BodyShape::mesh(std::make_shared<SignedDistanceField>(loadMesh(scene, body), voxel,
+                                                                     3.0, kInteriorBandVoxels));
     }
     return BodyShape::box(body.size);
 }
@@ -110,8 +113,8 @@ BoundaryParticles BodyBuilder::sampleBoundary(const RigidBodySettings& body,
     if (body.shape == "sphere") {
         particles = ShapeSampler::sampleSphere(body.radius - half, spacing_);
     } else if (body.shape == "cylinder") {
-        particles = ShapeSampler::sampleCylinder(body.radius - half, body.height - spacing_,
-                                                 spacing_);
+        particles =
+            ShapeSampler::sampleCylinder(body.radius - half, body.height - spacing_, spacing_);
     } else if (mesh) {
         particles = ShapeSampler::sampleMesh(*mesh, spacing_);
         pushOut(particles, -half);
@@ -146,8 +149,8 @@ KinematicMotion BodyBuilder::kinematicMotionOf(const RigidBodySettings& body) co
         return KinematicMotion(KeyframedPath(std::move(keys)));
     } catch (const Error& error) {
         throw Error(ErrorKind::InvalidInput,
-                    bodyLabel(scene_, body) + ": its keyframes do not form a path: " +
-                        error.what());
+                    bodyLabel(scene_, body) +
+                        ": its keyframes do not form a path: " + error.what());
     }
 }
 

@@ -58,12 +58,13 @@ void checkDomain(const Scene& scene, const RigidBody& body, std::size_t index,
     for (int axis = 0; axis < 3; ++axis)
         if (box.min[axis] < domain.min[axis] - kDomainTolerance ||
             box.max[axis] > domain.max[axis] + kDomainTolerance) {
-            findings.errors.push_back(
-                label(scene, index) + " reaches outside the domain (container plus headroom) "
-                "along " + axes[axis] + ": it spans " + rounded(box.min[axis]) + " to " +
-                rounded(box.max[axis]) + " m, the domain " +
-                ParameterCodec::formatNumber(domain.min[axis]) + " to " +
-                ParameterCodec::formatNumber(domain.max[axis]) + " m");
+            findings.errors.push_back(label(scene, index) +
+                                      " reaches outside the domain (container plus headroom) "
+                                      "along " +
+                                      axes[axis] + ": it spans " + rounded(box.min[axis]) + " to " +
+                                      rounded(box.max[axis]) + " m, the domain " +
+                                      ParameterCodec::formatNumber(domain.min[axis]) + " to " +
+                                      ParameterCodec::formatNumber(domain.max[axis]) + " m");
             return;
         }
 }
@@ -102,7 +103,8 @@ void checkBodies(const Scene& scene, const std::vector<RigidBody>& bodies,
         checkDomain(scene, bodies[a], index, findings);
         checkWater(scene, bodies[a], index, findings);
         for (std::size_t b = 0; b < a; ++b) {
-            if (!penetrates(bodies[a], bodies[b], depth) && !penetrates(bodies[b], bodies[a], depth))
+            if (!penetrates(bodies[a], bodies[b], depth) &&
+                !penetrates(bodies[b], bodies[a], depth))
                 continue;
             const std::string other =
                 b < scenery ? sceneryLabel(scene, b) : label(scene, b - scenery);

@@ -187,8 +187,8 @@ Vec3f InteractionPass::contactImpulse(const Vec3f& velocity, const Vec3f& accele
     const auto effectiveMass = [&](const Vec3f& direction) {
         return 1.0 / (inverseWaterMass + body.inverseEffectiveMass(x, direction.cast<double>()));
     };
-    const float normalImpulse = static_cast<float>(-(1.0 + body.restitution) * normalSpeed *
-                                                   effectiveMass(normal));
+    const float normalImpulse =
+        static_cast<float>(-(1.0 + body.restitution) * normalSpeed * effectiveMass(normal));
     Vec3f impulse = normalImpulse * normal;
     const Vec3f slip = predicted - normalSpeed * normal;
     const float slipSpeed = slip.norm();
@@ -201,8 +201,7 @@ Vec3f InteractionPass::contactImpulse(const Vec3f& velocity, const Vec3f& accele
 }
 
 void InteractionPass::recordContact(std::size_t i, const Contact& contact, const Vec3f& impulse,
-                                    const BoundaryModel& boundary,
-                                    ContactRecords& contacts) const {
+                                    const BoundaryModel& boundary, ContactRecords& contacts) const {
     const bool onDynamicBody =
         contact.boundaryParticle >= 0 &&
         boundary.contactTerms(boundary.bodyOf()[contact.boundaryParticle]).dynamic &&

@@ -59,8 +59,7 @@ public:
     //! pressure and friction it exerts on its water neighbours, minus the contact impulses it
     //! gave them over Δt. Same inputs as the force pass, after it.
     void bodyReactions(const InteractionInputs& in, const std::vector<float>& pressureTerms,
-                       const ContactRecords& contacts, double dt,
-                       std::vector<Vec3d>& forces) const;
+                       const ContactRecords& contacts, double dt, std::vector<Vec3d>& forces) const;
 
 private:
     //! The nearest boundary particle within the contact radius, if any.
@@ -77,8 +76,8 @@ private:
     //! Acceleration of water particle i (at xi, velocity vi, density rhoi, pressure term p/ρ²)
     //! from boundary particle b at offset d = xi − x_b, |d|² = r2 < support²: the pressure of
     //! the particle and of the wall plus the wall's artificial viscosity, weighted by Ψ_b.
-    Vec3f boundaryPairAcceleration(const Vec3f& xi, const Vec3f& vi, float rhoi,
-                                   float pressureTerm, std::size_t b, const Vec3f& d, float r2,
+    Vec3f boundaryPairAcceleration(const Vec3f& xi, const Vec3f& vi, float rhoi, float pressureTerm,
+                                   std::size_t b, const Vec3f& d, float r2,
                                    const BoundaryModel& boundary) const;
     //! The contact impulse J (N·s) of eq. 4 for a particle that would still approach the body
     //! after this step: j = −(1 + ε) uₙ / (1/mᵢ + K_B(n, r)) along the normal, plus Coulomb

@@ -13,8 +13,8 @@ public:
     //! their contacts and motion.
     enum Phase { Neighbours, Density, Forces, Bodies, Integrate, Count };
 
-    static constexpr std::array<std::string_view, Count> kNames = {
-        "neighbours", "density", "forces", "bodies", "integrate"};
+    static constexpr std::array<std::string_view, Count> kNames = {"neighbours", "density",
+                                                                   "forces", "bodies", "integrate"};
 
     //! Times one phase for as long as it lives.
     class Scope {

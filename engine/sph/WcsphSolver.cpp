@@ -136,11 +136,11 @@ void WcsphSolver::followPaths(SimulationState& state) {
 
 void WcsphSolver::placeBodies(SimulationState& state) {
     if (state.bodies.size() != bodies_.size() - sceneryCount_)
-        throw Error(ErrorKind::CacheCorrupt,
-                    "the state holds " + std::to_string(state.bodies.size()) +
-                        " rigid bodies but the scene has " +
-                        std::to_string(bodies_.size() - sceneryCount_) +
-                        "; the frame was baked from another scene");
+        throw Error(ErrorKind::CacheCorrupt, "the state holds " +
+                                                 std::to_string(state.bodies.size()) +
+                                                 " rigid bodies but the scene has " +
+                                                 std::to_string(bodies_.size() - sceneryCount_) +
+                                                 "; the frame was baked from another scene");
     for (std::size_t k = 0; k < state.bodies.size(); ++k)
         bodies_[sceneryCount_ + k].setState(state.bodies[k]);
     followPaths(state);

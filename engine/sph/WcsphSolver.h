@@ -102,8 +102,8 @@ private:
     std::vector<float> densityRates_;         //!< dρ/dt (eq. 2)
     std::vector<Vec3f> accelerations_;        //!< dv/dt (eq. 1 + contact impulses)
     ParticleSet reorderScratch_;
-    ContactRecords contacts_;         //!< impulses from dynamic bodies, for their reaction
-    std::vector<Vec3d> reactions_;    //!< N, the water's force on each boundary particle
+    ContactRecords contacts_;      //!< impulses from dynamic bodies, for their reaction
+    std::vector<Vec3d> reactions_; //!< N, the water's force on each boundary particle
 };
 
 } // namespace airtrap

@@ -54,20 +54,19 @@ private Q_SLOTS:
         while (simulation.state().time < 0.3)
             simulation.step(1.0);
 
-        const Vec3d sphereLoss =
-            sphere0 - sphereMass * simulation.state().bodies[0].linearVelocity;
-        const Vec3d waterGain =
-            waterMomentum(simulation.state().fluid, particleMass) - water0;
+        const Vec3d sphereLoss = sphere0 - sphereMass * simulation.state().bodies[0].linearVelocity;
+        const Vec3d waterGain = waterMomentum(simulation.state().fluid, particleMass) - water0;
         qInfo("sphere lost (%.5f, %.5f, %.5f) kg m/s, water gained (%.5f, %.5f, %.5f)",
               sphereLoss.x(), sphereLoss.y(), sphereLoss.z(), waterGain.x(), waterGain.y(),
               waterGain.z());
         // The impact must be real for the comparison to mean anything.
         QVERIFY2(sphereLoss.x() > 0.3 * sphere0.x(), "the sphere hardly slowed down");
         const double mismatch = (sphereLoss - waterGain).norm() / sphereLoss.norm();
-        QVERIFY2(mismatch < 0.03, qPrintable(QString("momentum mismatch %1 %").arg(100 * mismatch)));
+        QVERIFY2(mismatch < 0.03,
+                 qPrintable(QString("momentum mismatch %1 %").arg(100 * mismatch)));
         // No particle may have reached a wall: its force would break the balance unseen.
-        const Aabb walls = Aabb{scene.container.min, scene.container.max}.expanded(
-            -2.0 * scene.supportRadius());
+        const Aabb walls =
+            Aabb{scene.container.min, scene.container.max}.expanded(-2.0 * scene.supportRadius());
         for (const Vec3f& x : simulation.state().fluid.positions)
             QVERIFY2(walls.contains(x.cast<double>()), "water reached a wall; enlarge the tank");
     }

@@ -171,7 +171,10 @@ private Q_SLOTS:
         Recording recording;
         record(controller, recording);
         QSignalSpy finished(&controller, &SimulationController::finished);
-        controller.bake(test::tinyDamBreak(), dir.path(), false);
+        // Long enough that it cannot end on its own between the first progress and the pause.
+        Scene scene = test::tinyDamBreak();
+        scene.frames.endFrame = 200;
+        controller.bake(scene, dir.path(), false);
         QTRY_VERIFY_WITH_TIMEOUT(!recording.progress.isEmpty(), 20000);
         controller.pause();
         QTest::qWait(100);

@@ -61,8 +61,8 @@ private Q_SLOTS:
         NeighborGrid grid(kDomain, kCell);
         // The same cavity with a chimney up through the surface.
         grid.build(poolWithHole(0.6, [&](const Vec3d& x) {
-            const bool chimney = std::hypot(x.x() - centre.x(), x.z() - centre.z()) < 0.06 &&
-                                 x.y() > centre.y();
+            const bool chimney =
+                std::hypot(x.x() - centre.x(), x.z() - centre.z()) < 0.06 && x.y() > centre.y();
             return (x - centre).norm() < 0.1 || chimney;
         }));
         AirPocketFinder finder;

@@ -31,8 +31,7 @@ private Q_SLOTS:
         const BodyShape box = BodyShape::box(Vec3d(0.2, 0.4, 0.6));
         QCOMPARE(box.signedDistance(Vec3d(0.3, 0.0, 0.0)), 0.2);
         QCOMPARE(box.signedDistance(Vec3d(0.0, 0.0, 0.0)), -0.1);
-        QVERIFY(std::abs(box.signedDistance(Vec3d(0.4, 0.5, 0.0)) - std::hypot(0.3, 0.3)) <
-                1e-12);
+        QVERIFY(std::abs(box.signedDistance(Vec3d(0.4, 0.5, 0.0)) - std::hypot(0.3, 0.3)) < 1e-12);
         QCOMPARE(box.normal(Vec3d(0.0, -0.15, 0.0)), Vec3d(0.0, -1.0, 0.0));
     }
 
@@ -41,9 +40,9 @@ private Q_SLOTS:
         QCOMPARE(sphere.signedDistance(Vec3d(0.0, 2.0, 0.0)), 1.5);
         QCOMPARE(sphere.normal(Vec3d(3.0, 0.0, 0.0)), Vec3d(1.0, 0.0, 0.0));
         const BodyShape cylinder = BodyShape::cylinder(0.5, 2.0);
-        QCOMPARE(cylinder.signedDistance(Vec3d(1.0, 0.0, 0.0)), 0.5);    // beside
-        QCOMPARE(cylinder.signedDistance(Vec3d(0.0, 1.5, 0.0)), 0.5);    // above
-        QCOMPARE(cylinder.signedDistance(Vec3d(0.0, 0.0, 0.0)), -0.5);   // inside
+        QCOMPARE(cylinder.signedDistance(Vec3d(1.0, 0.0, 0.0)), 0.5);                   // beside
+        QCOMPARE(cylinder.signedDistance(Vec3d(0.0, 1.5, 0.0)), 0.5);                   // above
+        QCOMPARE(cylinder.signedDistance(Vec3d(0.0, 0.0, 0.0)), -0.5);                  // inside
         QVERIFY(std::abs(cylinder.signedDistance(Vec3d(0.8, 1.4, 0.0)) - 0.5) < 1e-12); // rim
     }
 

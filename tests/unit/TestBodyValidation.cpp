@@ -145,8 +145,7 @@ private Q_SLOTS:
                                "0; the body displaces it"),
                  all.c_str());
         QVERIFY2(contains(all, "bodies[1] (\"Ball\") overlaps obstacles[0]"), all.c_str());
-        QVERIFY2(contains(all, "bodies[1] (\"Ball\") overlaps bodies[0] (\"Crate\")"),
-                 all.c_str());
+        QVERIFY2(contains(all, "bodies[1] (\"Ball\") overlaps bodies[0] (\"Crate\")"), all.c_str());
         QVERIFY2(!contains(all, "overlaps the container"), all.c_str());
     }
 
