@@ -117,52 +117,53 @@ void RigidContactSolver::solveVelocities(std::vector<RigidBody>& bodies) {
         if (contact.normalMass == 0.0)
             continue;
         solveFriction(contact, bodies);
-        RigidBody& a = bodies[contact.a];
-        RigidBody& b = bodies[contact.b];
-        RigidBodyState stateA = a.state();
-        RigidBodyState stateB = b.state();
-        const double approach =
-            (pointVelocity(stateA, contact.point) - pointVelocity(stateB, contact.point))
-                .dot(contact.normal);
+        const double approach = relativeVelocity(bodies, contact).dot(contact.normal);
         const double change = -contact.normalMass * (approach - contact.restitutionSpeed);
         const double accumulated = std::max(contact.normalImpulse + change, 0.0);
         const Vec3d impulse = (accumulated - contact.normalImpulse) * contact.normal;
         contact.normalImpulse = accumulated;
-        RigidImpulse::apply(stateA, a.inertia(), impulse, contact.point);
-        RigidImpulse::apply(stateB, b.inertia(), -impulse, contact.point);
-        if (a.isDynamic())
-            a.setState(stateA);
-        if (b.isDynamic())
-            b.setState(stateB);
+        applyImpulse(bodies, contact, impulse);
     }
 }
 
 void RigidContactSolver::solveFriction(Contact& contact, std::vector<RigidBody>& bodies) {
-    RigidBody& a = bodies[contact.a];
-    RigidBody& b = bodies[contact.b];
-    RigidBodyState stateA = a.state();
-    RigidBodyState stateB = b.state();
-    const Vec3d relative =
-        pointVelocity(stateA, contact.point) - pointVelocity(stateB, contact.point);
+    const RigidBody& a = bodies[contact.a];
+    const RigidBody& b = bodies[contact.b];
+    const Vec3d relative = relativeVelocity(bodies, contact);
     const Vec3d slip = relative - relative.dot(contact.normal) * contact.normal;
     const double slipSpeed = slip.norm();
     if (slipSpeed == 0.0 || contact.friction == 0.0)
         return;
     const Vec3d tangent = slip / slipSpeed;
-    const double inverse = inverseMassAlong(a, stateA, contact.point, tangent) +
-                           inverseMassAlong(b, stateB, contact.point, tangent);
+    const double inverse = inverseMassAlong(a, a.state(), contact.point, tangent) +
+                           inverseMassAlong(b, b.state(), contact.point, tangent);
     Vec3d accumulated = contact.tangentImpulse - (slipSpeed / inverse) * tangent;
     const double limit = contact.friction * contact.normalImpulse;
     if (accumulated.norm() > limit)
         accumulated *= limit / accumulated.norm();
     const Vec3d impulse = accumulated - contact.tangentImpulse;
     contact.tangentImpulse = accumulated;
-    RigidImpulse::apply(stateA, a.inertia(), impulse, contact.point);
-    RigidImpulse::apply(stateB, b.inertia(), -impulse, contact.point);
-    if (a.isDynamic())
-        a.setState(stateA);
-    if (b.isDynamic())
-        b.setState(stateB);
+    applyImpulse(bodies, contact, impulse);
+}
+
+Vec3d RigidContactSolver::relativeVelocity(const std::vector<RigidBody>& bodies,
+                                           const Contact& contact) {
+    return pointVelocity(bodies[contact.a].state(), contact.point) -
+           pointVelocity(bodies[contact.b].state(), contact.point);
+}
+
+void RigidContactSolver::applyImpulse(std::vector<RigidBody>& bodies, const Contact& contact,
+                                      const Vec3d& impulse) {
+    // +impulse on a, the body the normal points towards; −impulse on b. Static and kinematic
+    // bodies keep their state (RigidImpulse leaves infinite masses alone anyway).
+    for (const auto& [index, sign] : {std::pair{contact.a, 1.0}, std::pair{contact.b, -1.0}}) {
+        RigidBody& body = bodies[index];
+        if (!body.isDynamic())
+            continue;
+        RigidBodyState state = body.state();
+        RigidImpulse::apply(state, body.inertia(), sign * impulse, contact.point);
+        body.setState(state);
+    }
 }
 
 std::vector<RigidVelocity> RigidContactSolver::solvePositions(const std::vector<RigidBody>& bodies,

@@ -65,6 +65,10 @@ private:
     void prepare(const std::vector<RigidBody>& bodies, double dt);
     void solveVelocities(std::vector<RigidBody>& bodies);
     void solveFriction(Contact& contact, std::vector<RigidBody>& bodies);
+    //! Velocity of body a's material point at the contact relative to body b's.
+    static Vec3d relativeVelocity(const std::vector<RigidBody>& bodies, const Contact& contact);
+    static void applyImpulse(std::vector<RigidBody>& bodies, const Contact& contact,
+                             const Vec3d& impulse);
     std::vector<RigidVelocity> solvePositions(const std::vector<RigidBody>& bodies, double dt);
 
     Settings settings_;
