@@ -84,6 +84,43 @@ private Q_SLOTS:
         }
         QCOMPARE(FrameCache::open(dir).frames(), (std::vector<int>{1, 2}));
     }
+
+    //! The cached frames hold a state for each body the scene had; a body added later has
+    //! none, so continuing is refused, while a body's edited density is taken from here on.
+    void refusesAnAddedBodyButTakesAnEditedOne() {
+        QTemporaryDir folder;
+        const std::string dir = folder.filePath("cache").toStdString();
+        Scene original = smallSplash();
+        RigidBodySettings ball;
+        ball.name = "Ball";
+        ball.shape = "sphere";
+        ball.radius = 0.06;
+        ball.position = Vec3d(0.45, 0.3, 0.12);
+        original.bodies.push_back(ball);
+        bake(original, dir, false, 2, false);
+
+        Scene added = original;
+        ball.name = "Second";
+        ball.position.x() = 0.3;
+        added.bodies.push_back(ball);
+        try {
+            bake(added, dir, true, 0, true);
+            QFAIL("a body added mid-bake was accepted");
+        } catch (const Error& error) {
+            const QString message = QString::fromUtf8(error.what());
+            QVERIFY2(message.contains("now has 2 bodies, the cached frames 1") &&
+                         message.contains("frame 1"),
+                     qPrintable(message));
+        }
+        QCOMPARE(FrameCache::open(dir).frames(), (std::vector<int>{1, 2}));
+
+        Scene heavier = original;
+        heavier.bodies[0].density = 2000.0;
+        bake(heavier, dir, true, 0, true);
+        const FrameCache cache = FrameCache::open(dir);
+        QCOMPARE(cache.frames(), (std::vector<int>{1, 2, 3, 4, 5}));
+        QCOMPARE(cache.manifest().scene["bodies"][0]["density"].get<double>(), 2000.0);
+    }
 };
 
 QTEST_APPLESS_MAIN(TestBakerEditedScene)
