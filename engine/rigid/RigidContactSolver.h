@@ -39,9 +39,6 @@ public:
     //! add to its velocity when its pose moves this step (zero for bodies without overlap).
     std::vector<RigidVelocity> solve(std::vector<RigidBody>& bodies, double dt);
 
-    //! Number of contact points of the last solve(), for tests and statistics.
-    std::size_t lastContactCount() const { return contacts_.size(); }
-
 private:
     struct Contact {
         std::size_t a = 0; //!< the body the normal points towards

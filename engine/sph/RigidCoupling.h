@@ -22,11 +22,6 @@ public:
     void advance(std::vector<RigidBody>& bodies, const BoundaryModel& boundary,
                  const std::vector<Vec3d>& reactions, double dt);
 
-    //! The water's force (N) and torque (N·m, about the centre of mass) on each body in the last
-    //! advance(), for tests and statistics.
-    const std::vector<Vec3d>& lastForces() const { return forces_; }
-    const std::vector<Vec3d>& lastTorques() const { return torques_; }
-
 private:
     //! Sums the reactions per body, in the boundary's sorted order so the sum is deterministic.
     void sumReactions(const std::vector<RigidBody>& bodies, const BoundaryModel& boundary,
@@ -34,8 +29,8 @@ private:
 
     Vec3d gravity_;
     RigidContactSolver contacts_;
-    std::vector<Vec3d> forces_;
-    std::vector<Vec3d> torques_;
+    std::vector<Vec3d> forces_;  //!< N, the water's force on each body this step
+    std::vector<Vec3d> torques_; //!< N·m, about each body's centre of mass
 };
 
 } // namespace airtrap
