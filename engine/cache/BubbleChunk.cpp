@@ -5,10 +5,28 @@
 
 namespace airtrap {
 
+namespace {
+
+void writeDeletions(ByteWriter& out, const BubbleTally& tally) {
+    for (std::uint64_t count : tally.deleted)
+        out.u64(count);
+}
+
+void readDeletions(ByteReader& in, BubbleTally& tally) {
+    for (std::uint64_t& count : tally.deleted)
+        count = in.u64();
+}
+
+} // namespace
+
 void BubbleChunk::write(ByteWriter& out, const std::vector<BubbleState>& bubbles,
-                        std::uint32_t nextId) {
+                        std::uint32_t nextId, const BubbleTally& deletedSoFar,
+                        const BubbleTally& frameTally) {
     out.u32(static_cast<std::uint32_t>(bubbles.size()));
     out.u32(nextId);
+    writeDeletions(out, deletedSoFar);
+    out.u64(frameTally.created);
+    writeDeletions(out, frameTally);
     for (const BubbleState& bubble : bubbles) {
         out.u32(bubble.id);
         out.i32(bubble.birthFrame);
@@ -22,16 +40,20 @@ void BubbleChunk::write(ByteWriter& out, const std::vector<BubbleState>& bubbles
 }
 
 void BubbleChunk::read(const std::uint8_t* data, std::size_t size, const std::string& path,
-                       std::vector<BubbleState>& bubbles, std::uint32_t& nextId) {
+                       const Contents& into) {
     ByteReader in(data, size, path + ": chunk BUBL");
     const std::uint32_t count = in.u32();
-    nextId = in.u32();
+    into.nextId = in.u32();
+    readDeletions(in, into.deletedSoFar);
+    into.frameTally.created = in.u64();
+    readDeletions(in, into.frameTally);
     // Exact, like BODY: a damaged count must not pass for a newer layout.
-    const std::uint64_t expected = 2 * sizeof(std::uint32_t) + std::uint64_t(count) * kRecordSize;
+    const std::uint64_t expected = kHeaderSize + std::uint64_t(count) * kRecordSize;
     if (size != expected)
         throw Error(ErrorKind::CacheCorrupt, path + ": chunk BUBL is " + std::to_string(size) +
                                                  " bytes, expected " + std::to_string(expected) +
                                                  " for " + std::to_string(count) + " bubbles");
+    std::vector<BubbleState>& bubbles = into.bubbles;
     bubbles.clear();
     bubbles.reserve(count);
     for (std::uint32_t i = 0; i < count; ++i) {

@@ -1,7 +1,8 @@
 #pragma once
-// The BUBL chunk of a frame file: the trapped air bubbles and the next bubble id
-// (docs/CACHE_FORMAT.md). Kept apart from FrameFile so each chunk's layout reads in one place.
+// The BUBL chunk of a frame file: the trapped air bubbles, the next bubble id, the deletions so
+// far and the frame's own creations and deletions per rule (docs/CACHE_FORMAT.md). Kept apart from FrameFile so each chunk's layout reads in one place.
 #include "bubbles/BubbleState.h"
+#include "bubbles/BubbleTally.h"
 #include "cache/ByteReader.h"
 #include "cache/ByteWriter.h"
 
@@ -17,6 +18,17 @@ public:
     //! u32 id, i32 birth frame, f64 radius, 13 f64 body, 4 f64 (age, floating time, area
     //! fraction, pocket volume).
     static constexpr std::size_t kRecordSize = 2 * sizeof(std::uint32_t) + 18 * sizeof(double);
+    //! u32 count, u32 next id, u64 × 4 deletions so far, u64 × 5 the frame's tally.
+    static constexpr std::size_t kHeaderSize =
+        2 * sizeof(std::uint32_t) + (2 * BubbleTally::RuleCount + 1) * sizeof(std::uint64_t);
+
+    //! What the chunk holds besides the records' count.
+    struct Contents {
+        std::vector<BubbleState>& bubbles;
+        std::uint32_t& nextId;
+        BubbleTally& deletedSoFar;
+        BubbleTally& frameTally;
+    };
 
     //! Whether a frame needs the chunk: not for scenes that never made a bubble, whose frames
     //! stay byte-identical to those written before bubbles existed.
@@ -25,10 +37,11 @@ public:
     }
     //! The chunk's body (after its tag and length).
     static void write(ByteWriter& out, const std::vector<BubbleState>& bubbles,
-                      std::uint32_t nextId);
+                      std::uint32_t nextId, const BubbleTally& deletedSoFar,
+                      const BubbleTally& frameTally);
     //! Throws Error(CacheCorrupt) naming `path` when the size does not match the count.
     static void read(const std::uint8_t* data, std::size_t size, const std::string& path,
-                     std::vector<BubbleState>& bubbles, std::uint32_t& nextId);
+                     const Contents& into);
 };
 
 } // namespace airtrap

@@ -93,9 +93,10 @@ void writeBodyChunk(ByteWriter& out, const std::vector<RigidBodyState>& bodies) 
     endChunk(out, at);
 }
 
-void writeBubbleChunk(ByteWriter& out, const SimulationState& state) {
+void writeBubbleChunk(ByteWriter& out, const SimulationState& state, const FrameStats& stats) {
     const std::size_t at = beginChunk(out, BubbleChunk::kTag);
-    BubbleChunk::write(out, state.bubbles, state.nextBubbleId);
+    BubbleChunk::write(out, state.bubbles, state.nextBubbleId, state.bubblesDeleted,
+                       stats.bubbles);
     endChunk(out, at);
 }
 
@@ -329,8 +330,9 @@ void readChunks(const std::vector<Chunk>& chunks, FrameData& frame, const std::s
         } else if (chunk.tag == BubbleChunk::kTag) {
             if (++bubbleChunks > 1)
                 corrupt(path, "more than one BUBL chunk");
-            BubbleChunk::read(chunk.data, chunk.size, path, frame.state.bubbles,
-                              frame.state.nextBubbleId);
+            BubbleChunk::read(chunk.data, chunk.size, path,
+                              {frame.state.bubbles, frame.state.nextBubbleId,
+                               frame.state.bubblesDeleted, frame.stats.bubbles});
         }
     }
     if (stateChunks != 1 || statsChunks != 1)
@@ -374,7 +376,7 @@ std::vector<std::uint8_t> encodeFrame(const SimulationState& state, const FrameS
     if (!state.bodies.empty())
         writeBodyChunk(out, state.bodies);
     if (BubbleChunk::needed(state.bubbles, state.nextBubbleId))
-        writeBubbleChunk(out, state);
+        writeBubbleChunk(out, state, stats);
     writeHeader(bytes, state.frame);
     return bytes;
 }

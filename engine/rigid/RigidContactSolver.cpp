@@ -52,6 +52,8 @@ void RigidContactSolver::findContacts(const std::vector<RigidBody>& bodies) {
         for (std::size_t b = 0; b < bodies.size(); ++b) {
             if (b == a || (bodies[b].isDynamic() && b < a))
                 continue; // a dynamic pair is handled once, from its lower index, both ways
+            if (a >= bubblesFrom_ && b >= bubblesFrom_)
+                continue;
             if (!mayTouch(bodies[a], bodies[b], settings_.margin))
                 continue;
             collide(bodies, a, b);

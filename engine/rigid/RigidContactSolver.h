@@ -34,6 +34,10 @@ public:
 
     explicit RigidContactSolver(const Settings& settings) : settings_(settings) {}
 
+    //! Bodies from `index` on are bubbles: they touch the other bodies as usual, but not each
+    //! other, since bubble pairs take their own impulse with non-positive restitution.
+    void setBubblesFrom(std::size_t index) { bubblesFrom_ = index; }
+
     //! Resolves the contacts of `bodies` (world states) over a step of `dt` seconds: changes
     //! the velocities of dynamic bodies, and returns each body's extra "position velocity" to
     //! add to its velocity when its pose moves this step (zero for bodies without overlap).
@@ -69,6 +73,7 @@ private:
     std::vector<RigidVelocity> solvePositions(const std::vector<RigidBody>& bodies, double dt);
 
     Settings settings_;
+    std::size_t bubblesFrom_ = static_cast<std::size_t>(-1);
     std::vector<Contact> contacts_;
 };
 

@@ -103,6 +103,25 @@ struct BodyKeyframe {
     Vec3d rotation = Vec3d::Zero(); //!< degrees, as RigidBodySettings::rotation
 };
 
+//! Trapped air bubbles (paper §3.2–3.4): light sphere bodies created in air pockets the water
+//! encloses, steered toward their Stokes rise speed, and deleted by the rules of §3.4.
+struct BubbleSettings {
+    bool enabled = false;
+    double densityRatio = 0.1;          //!< bubble density / water density (paper: 0.1)
+    double minRadius = 1.5;             //!< particle spacings; smaller pockets make no bubble
+    int maxNewPerFrame = 5;             //!< bubbles created per frame at most
+    double kinematicViscosity = 1.0e-6; //!< m²/s, ν of water in the Stokes speed (eq. 5)
+    double maxRiseSpeed = 0.25;         //!< m/s, cap of the Stokes speed
+    double riseTime = 0.02;             //!< s, time constant of the steering toward it
+    double drag = 10.0;                 //!< 1/s, rate of the drag toward the water's velocity
+    double approachRestitution = -0.6;  //!< ε₁ between approaching bubbles
+    double overlapRestitution = -0.2;   //!< ε₂ between overlapping bubbles
+    double maxAge = 10.0;               //!< s; older bubbles are deleted
+    double maxFloatingTime = 0.5;       //!< s at the free surface before deletion
+    double maxOverlap = 0.5;            //!< overlap depth / smaller diameter that deletes
+    double impactSpeed = 2.0;           //!< m/s of water hitting a floating bubble that pops it
+};
+
 struct Scene {
     static constexpr int kFormatVersion = 1;
 
@@ -116,6 +135,7 @@ struct Scene {
     std::vector<InflowEmitterSettings> emitters;
     std::vector<RigidBodySettings> bodies;
     std::vector<BodyKeyframe> keyframes;
+    BubbleSettings bubbles;
 
     //! Where the scene was read from (not saved); used in messages.
     std::string sourcePath;

@@ -1,6 +1,7 @@
 #include "scene/SceneSections.h"
 
 #include "scene/BodySections.h"
+#include "scene/BubbleSection.h"
 #include "scene/SchemaBinding.h"
 
 namespace airtrap {
@@ -385,6 +386,7 @@ std::vector<SchemaSection> buildSceneSections() {
     sections.push_back(emittersSection());
     sections.push_back(bodiesSection());
     sections.push_back(keyframesSection());
+    sections.push_back(bubblesSection());
     return sections;
 }
 

@@ -59,6 +59,7 @@ public:
         checkBodySizes();
         checkBodyNames();
         checkKeyframes();
+        checkBubbles();
         if (containerValid && issues_.ok())
             checkBodyPlacement();
         return issues_;
@@ -233,6 +234,20 @@ private:
         }
     }
 
+    void checkBubbles() {
+        const BubbleSettings& bubbles = scene_.bubbles;
+        // Paper §3.3.2: ε₁ < ε₂ ≤ 0; equal values (−1 for no interaction at all) are allowed.
+        if (bubbles.approachRestitution > bubbles.overlapRestitution)
+            error("bubbles.approach_restitution = " + number(bubbles.approachRestitution) +
+                  " exceeds bubbles.overlap_restitution = " + number(bubbles.overlapRestitution) +
+                  "; approaching bubbles take at most the overlapping ones' restitution "
+                  "(ε₁ ≤ ε₂ ≤ 0)");
+        if (bubbles.enabled && bubbles.maxRiseSpeed > scene_.solver.maxSpeed)
+            error("bubbles.max_rise_speed = " + number(bubbles.maxRiseSpeed) +
+                  " m/s exceeds solver.max_speed = " + number(scene_.solver.maxSpeed) +
+                  " m/s; raise solver.max_speed or lower the cap");
+    }
+
     void checkBodyNames() {
         for (std::size_t i = 0; i < scene_.bodies.size(); ++i)
             for (std::size_t j = 0; j < i; ++j)
@@ -309,6 +324,8 @@ std::vector<std::string> SceneValidator::ruleDescriptions() {
         "`particle_spacing` in every size; a mesh body names a closed, readable mesh file "
         "(relative to the scene file); every body lies inside the domain.",
         "Every keyframe names a kinematic body, and no two keyframes of a body share a time.",
+        "`bubbles.approach_restitution` is at most `bubbles.overlap_restitution` (ε₁ ≤ ε₂ ≤ 0); "
+        "with bubbles enabled, `bubbles.max_rise_speed` is at most `solver.max_speed`.",
         "Warnings, which do not stop a bake: fluid blocks that overlap each other or an "
         "obstacle, fluid blocks thinner than `particle_spacing`, emitters whose "
         "`max_particles` is less than one layer of their nozzle, and bodies that overlap the "

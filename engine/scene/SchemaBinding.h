@@ -67,6 +67,9 @@ const Held& asHeld(const ParameterValue& value, const std::string& key) {
     kindMismatch(key, value);
 }
 
+inline ParameterValue toValue(bool field) {
+    return field;
+}
 inline ParameterValue toValue(double field) {
     return field;
 }
@@ -83,6 +86,9 @@ inline ParameterValue toValue(const std::string& field) {
     return field;
 }
 
+inline void assign(bool& field, const ParameterValue& value, const std::string& key) {
+    field = asHeld<bool>(value, key);
+}
 inline void assign(double& field, const ParameterValue& value, const std::string& key) {
     field = asReal(value, key);
 }
@@ -105,6 +111,8 @@ template <class Field>
 ParameterKind kindOf(const ParameterDeclaration& declaration) {
     if constexpr (std::is_same_v<Field, std::string>)
         return declaration.choices.empty() ? ParameterKind::String : ParameterKind::Choice;
+    else if constexpr (std::is_same_v<Field, bool>)
+        return ParameterKind::Bool;
     else if constexpr (std::is_same_v<Field, double>)
         return ParameterKind::Real;
     else if constexpr (std::is_same_v<Field, Vec3d>)

@@ -1,4 +1,6 @@
 #pragma once
+#include "bubbles/BubbleTally.h"
+
 #include <cstdint>
 #include <map>
 #include <string>
@@ -13,6 +15,7 @@ struct FrameStats {
     std::uint64_t stepsInFrame = 0;
     double maxSpeed = 0.0;    //!< m/s over the water particles at the frame's end
     double meanDensity = 0.0; //!< kg/m³
+    BubbleTally bubbles;      //!< bubbles created and deleted (per rule) during the frame
 
     bool operator==(const FrameStats& other) const = default;
 };

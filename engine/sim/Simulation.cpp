@@ -5,6 +5,7 @@
 #include "sph/WcsphSolver.h"
 
 #include <chrono>
+#include <limits>
 #include <cmath>
 #include <sstream>
 #include <tbb/blocked_range.h>
@@ -60,9 +61,13 @@ Simulation::Simulation(Scene scene, SimulationState resumeFrom)
     : scene_(std::move(scene)), state_(std::move(resumeFrom)),
       solver_(std::make_unique<WcsphSolver>(scene_.solver, scene_.domain(),
                                             SceneSetup::buildBodies(scene_),
-                                            SceneSetup::sceneryCount(scene_))) {
+                                            SceneSetup::sceneryCount(scene_), scene_.bubbles)) {
     for (const InflowEmitterSettings& settings : scene_.emitters)
         emitters_.emplace_back(settings, scene_.solver.particleSpacing, scene_.solver.restDensity);
+    if (scene_.bubbles.enabled) {
+        bubbleDeletion_.emplace(scene_.bubbles);
+        bubbleSpawner_.emplace(scene_.bubbles, scene_.solver.particleSpacing, scene_.seed);
+    }
     lastFrameStats_ = measure(state_.fluid);
 }
 
@@ -82,19 +87,15 @@ Simulation::Advance Simulation::advanceFrame(Interrupter& interrupter, const Ste
     std::size_t lost = 0;
     std::uint64_t steps = 0;
     solver_->phases().reset();
+    frameBubbles_ = {};
     const auto wallStart = std::chrono::steady_clock::now();
 
     while (state_.time < target) {
         const double remaining = target - state_.time;
         const StepReport report = solver_->step(state_, remaining);
-        const double stepStart = state_.time;
-        // The last step lands on the frame time exactly, not on an accumulated sum.
-        state_.time = report.timeStep == remaining ? target : state_.time + report.timeStep;
-        solver_->followPaths(state_);
-        // After the step, so that the cached frame holds the particles due by its time and a
-        // resumed bake starts from the same set. Growth is not loss: `lost` counts only the
-        // particles the solver removed at the domain's walls.
-        emitInflow(stepStart, state_.time);
+        afterStep(report, target);
+        // Growth is not loss: `lost` counts only the particles the solver removed at the
+        // domain's walls.
         lost += report.removedParticles;
         ++steps;
         checkHealth(report, remaining, nextFrame, lost, particlesAtStart);
@@ -105,8 +106,10 @@ Simulation::Advance Simulation::advanceFrame(Interrupter& interrupter, const Ste
             return Advance::Interrupted;
     }
 
+    createBubbles(nextFrame);
     state_.frame = nextFrame;
     lastFrameStats_ = measure(state_.fluid);
+    lastFrameStats_.bubbles = frameBubbles_;
     lastFrameStats_.stepsInFrame = steps;
     lastFrameStats_.wallSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
@@ -118,11 +121,37 @@ Simulation::Advance Simulation::advanceFrame(Interrupter& interrupter, const Ste
 
 StepReport Simulation::step(double maxTimeStep) {
     const StepReport report = solver_->step(state_, maxTimeStep);
-    const double stepStart = state_.time;
-    state_.time += report.timeStep;
-    solver_->followPaths(state_);
-    emitInflow(stepStart, state_.time);
+    afterStep(report, std::numeric_limits<double>::infinity());
     return report;
+}
+
+void Simulation::afterStep(const StepReport& report, double frameEnd) {
+    const double stepStart = state_.time;
+    // The last step of a frame lands on the frame time exactly, not on an accumulated sum.
+    state_.time = report.timeStep == frameEnd - stepStart ? frameEnd : stepStart + report.timeStep;
+    solver_->followPaths(state_);
+    // After the step, so that the cached frame holds the particles due by its time and a
+    // resumed bake starts from the same set.
+    emitInflow(stepStart, state_.time);
+    if (bubbleDeletion_ && !state_.bubbles.empty()) {
+        StepPhases::Scope scope(solver_->phases(), StepPhases::BubbleDeletion);
+        BubbleTally deleted;
+        bubbleDeletion_->afterStep(state_.bubbles, solver_->bubbleSurroundings(),
+                                   report.timeStep, deleted);
+        frameBubbles_ += deleted;
+        state_.bubblesDeleted += deleted;
+    }
+}
+
+void Simulation::createBubbles(int frame) {
+    if (!bubbleSpawner_ || state_.steps == 0)
+        return; // no step yet: the grid holds no water
+    StepPhases::Scope scope(solver_->phases(), StepPhases::BubblePockets);
+    std::vector<const RigidBody*> solids;
+    for (std::size_t k = 0; k < solver_->firstBubbleBody(); ++k)
+        solids.push_back(&solver_->bodies()[k]);
+    const BubbleSpawner::Water water{solver_->grid(), solver_->sortedPositions(), state_.fluid};
+    frameBubbles_.created += bubbleSpawner_->spawn(state_, water, solids, frame);
 }
 
 void Simulation::emitInflow(double from, double to) {

@@ -1,5 +1,7 @@
 #pragma once
 // The simulation: owns the state and steps it in the order of the paper's Table 1.
+#include "bubbles/BubbleDeletion.h"
+#include "bubbles/BubbleSpawner.h"
 #include "core/Interrupter.h"
 #include "scene/Scene.h"
 #include "sim/FrameStats.h"
@@ -8,6 +10,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace airtrap {
@@ -54,12 +57,20 @@ private:
                      std::size_t particlesAtStart) const;
     //! Adds the inflow layers due during the step that just went from `from` to `to`.
     void emitInflow(double from, double to);
+    //! The bookkeeping after every solver step: time, kinematic paths, inflow, bubble deletion.
+    //! `frameEnd` is the time the frame under way ends at (s).
+    void afterStep(const StepReport& report, double frameEnd);
+    //! Turns the air pockets of the last step's grid into bubbles born in `frame`.
+    void createBubbles(int frame);
 
     Scene scene_;
     SimulationState state_;
     FrameStats lastFrameStats_;
     std::unique_ptr<WcsphSolver> solver_;
     std::vector<InflowEmitter> emitters_;
+    std::optional<BubbleDeletion> bubbleDeletion_;
+    std::optional<BubbleSpawner> bubbleSpawner_;
+    BubbleTally frameBubbles_; //!< created and deleted during the frame under way
 };
 
 } // namespace airtrap

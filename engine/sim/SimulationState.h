@@ -1,6 +1,7 @@
 #pragma once
 // Everything needed to continue a bake bit-for-bit: the cache stores exactly this per frame.
 #include "bubbles/BubbleState.h"
+#include "bubbles/BubbleTally.h"
 #include "rigid/RigidBodyState.h"
 #include "sph/ParticleSet.h"
 
@@ -22,7 +23,9 @@ struct SimulationState {
     std::vector<RigidBodyState> bodies;
     //! The trapped air bubbles alive at the end of the frame, oldest first.
     std::vector<BubbleState> bubbles;
-    std::uint32_t nextBubbleId = 0;
+    std::uint32_t nextBubbleId = 0; //!< also the number of bubbles created so far
+    //! Bubbles deleted so far, per rule (`created` unused: nextBubbleId counts them).
+    BubbleTally bubblesDeleted;
 
     bool operator==(const SimulationState& other) const = default;
 };

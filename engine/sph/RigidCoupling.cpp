@@ -36,7 +36,8 @@ void RigidCoupling::sumReactions(const std::vector<RigidBody>& bodies,
 }
 
 void RigidCoupling::advance(std::vector<RigidBody>& bodies, const BoundaryModel& boundary,
-                            const std::vector<Vec3d>& reactions, double dt) {
+                            const std::vector<Vec3d>& reactions, double dt,
+                            const ExtraForces& extraForces) {
     sumReactions(bodies, boundary, reactions);
     std::vector<Vec3d> turnRates(bodies.size(), Vec3d::Zero());
     std::vector<Vec3d> spinBeforeContacts(bodies.size(), Vec3d::Zero());
@@ -49,6 +50,8 @@ void RigidCoupling::advance(std::vector<RigidBody>& bodies, const BoundaryModel&
         spinBeforeContacts[k] = state.angularVelocity;
         bodies[k].setState(state);
     }
+    if (extraForces)
+        extraForces(bodies, dt);
     const std::vector<RigidVelocity> pushes = contacts_.solve(bodies, dt);
     for (std::size_t k = 0; k < bodies.size(); ++k) {
         if (!bodies[k].isDynamic())

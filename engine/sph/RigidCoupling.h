@@ -8,6 +8,7 @@
 #include "rigid/RigidContactSolver.h"
 #include "sph/BoundaryModel.h"
 
+#include <functional>
 #include <vector>
 
 namespace airtrap {
@@ -17,10 +18,17 @@ public:
     //! `spacing` (m) of the particles sets the contact solver's tolerances.
     RigidCoupling(const Vec3d& gravity, double spacing);
 
+    //! Changes the bodies' velocities once the water's force and gravity have acted, before
+    //! contacts: the bubbles' own forces.
+    using ExtraForces = std::function<void(std::vector<RigidBody>& bodies, double dt)>;
+
     //! Moves the dynamic bodies of `bodies` over `dt` (s). `reactions` holds the water's force
     //! on each sorted boundary particle of `boundary` (InteractionPass::bodyReactions).
     void advance(std::vector<RigidBody>& bodies, const BoundaryModel& boundary,
-                 const std::vector<Vec3d>& reactions, double dt);
+                 const std::vector<Vec3d>& reactions, double dt,
+                 const ExtraForces& extraForces = {});
+    //! See RigidContactSolver::setBubblesFrom.
+    void setBubblesFrom(std::size_t index) { contacts_.setBubblesFrom(index); }
 
 private:
     //! Sums the reactions per body, in the boundary's sorted order so the sum is deterministic.

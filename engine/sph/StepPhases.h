@@ -9,12 +9,26 @@ namespace airtrap {
 
 class StepPhases {
 public:
-    //! Bodies: placing moving bodies' boundary particles, the water's reaction on dynamic bodies,
-    //! their contacts and motion.
-    enum Phase { Neighbours, Density, Forces, Bodies, Integrate, Count };
+    //! Bodies: placing moving bodies' boundary particles (bubbles' too), the water's reaction on
+    //! dynamic bodies, their contacts and motion. BubbleForces: measuring the water around each
+    //! bubble for its drag, steering and deletion rules (applying them is a few operations per
+    //! bubble, inside Bodies). BubblePockets: finding air pockets and creating bubbles, once per
+    //! frame. BubbleDeletion: the deletion rules, after every step.
+    enum Phase {
+        Neighbours,
+        Density,
+        Forces,
+        Bodies,
+        Integrate,
+        BubbleForces,
+        BubblePockets,
+        BubbleDeletion,
+        Count
+    };
 
-    static constexpr std::array<std::string_view, Count> kNames = {"neighbours", "density",
-                                                                   "forces", "bodies", "integrate"};
+    static constexpr std::array<std::string_view, Count> kNames = {
+        "neighbours",    "density",        "forces",         "bodies",
+        "integrate",     "bubble_forces",  "bubble_pockets", "bubble_deletion"};
 
     //! Times one phase for as long as it lives.
     class Scope {

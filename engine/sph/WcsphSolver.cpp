@@ -34,7 +34,8 @@ double parallelMax(std::size_t n, F&& f) {
 } // namespace
 
 WcsphSolver::WcsphSolver(const SolverSettings& settings, const Aabb& domain,
-                         std::vector<RigidBody> bodies, std::size_t sceneryCount)
+                         std::vector<RigidBody> bodies, std::size_t sceneryCount,
+                         const BubbleSettings& bubbles)
     : settings_(settings),
       kernel_(static_cast<float>(settings.supportFactor * settings.particleSpacing)),
       spacing_(static_cast<float>(settings.particleSpacing)),
@@ -44,13 +45,21 @@ WcsphSolver::WcsphSolver(const SolverSettings& settings, const Aabb& domain,
       // The grid reaches one support radius beyond the domain so that the boundary layer, which
       // sits half a spacing outside the container's walls, is inside it.
       gridDomain_(domain.expanded(kernel_.supportRadius())), bodies_(std::move(bodies)),
-      sceneryCount_(std::min(sceneryCount, bodies_.size())),
+      sceneryCount_(std::min(sceneryCount, bodies_.size())), firstBubble_(bodies_.size()),
       boundary_(gridDomain_, kernel_.supportRadius(), static_cast<float>(settings.restDensity)),
       coupling_(settings.gravity, settings.particleSpacing),
       grid_(gridDomain_, kernel_.supportRadius()), passes_(kernel_, interactionConstants()) {
     for (const RigidBody& body : bodies_)
         anyBodyMoves_ = anyBodyMoves_ || body.isMoving();
     boundary_.rebuild(bodies_);
+    if (bubbles.enabled)
+        bubbles_.emplace(bubbles, settings_, kernel_);
+    coupling_.setBubblesFrom(firstBubble_);
+}
+
+const std::vector<BubbleSurroundings>& WcsphSolver::bubbleSurroundings() const {
+    static const std::vector<BubbleSurroundings> none;
+    return bubbles_ ? bubbles_->surroundings() : none;
 }
 
 InteractionConstants WcsphSolver::interactionConstants() const {
@@ -85,7 +94,8 @@ StepReport WcsphSolver::step(SimulationState& state, double timeToFrameEnd) {
         StepPhases::Scope scope(phases_, StepPhases::Neighbours);
         sortByCell(fluid, report);
     }
-    if (anyBodyMoves_) {
+    // Bodies of bubbles deleted since the last step must leave too.
+    if (anyBodyMoves_ || !state.bubbles.empty() || bodies_.size() != firstBubble_) {
         StepPhases::Scope scope(phases_, StepPhases::Bodies);
         placeBodies(state);
     }
@@ -109,6 +119,10 @@ StepReport WcsphSolver::step(SimulationState& state, double timeToFrameEnd) {
         report.maxAcceleration =
             passes_.accelerations(inputs, neighbors_, pressureOverDensity2_, report.timeStep,
                                   accelerations_, recordContacts ? &contacts_ : nullptr);
+    }
+    if (bubbles_ && !state.bubbles.empty()) {
+        StepPhases::Scope scope(phases_, StepPhases::BubbleForces);
+        bubbles_->measureSurroundings(bodies_, firstBubble_, fluid, sortedPositions_, grid_);
     }
     if (boundary_.hasDynamicBodies()) {
         StepPhases::Scope scope(phases_, StepPhases::Bodies);
@@ -135,14 +149,20 @@ void WcsphSolver::followPaths(SimulationState& state) {
 }
 
 void WcsphSolver::placeBodies(SimulationState& state) {
-    if (state.bodies.size() != bodies_.size() - sceneryCount_)
+    const std::size_t sceneBodies = firstBubble_ - sceneryCount_;
+    if (state.bodies.size() != sceneBodies)
         throw Error(ErrorKind::CacheCorrupt, "the state holds " +
                                                  std::to_string(state.bodies.size()) +
                                                  " rigid bodies but the scene has " +
-                                                 std::to_string(bodies_.size() - sceneryCount_) +
+                                                 std::to_string(sceneBodies) +
                                                  "; the frame was baked from another scene");
+    if (!state.bubbles.empty() && !bubbles_)
+        throw Error(ErrorKind::CacheCorrupt,
+                    "the state holds bubbles but the scene has bubbles.enabled = false");
     for (std::size_t k = 0; k < state.bodies.size(); ++k)
         bodies_[sceneryCount_ + k].setState(state.bodies[k]);
+    if (bubbles_)
+        bubbles_->syncBodies(bodies_, firstBubble_, state.bubbles);
     followPaths(state);
     boundary_.rebuild(bodies_);
 }
@@ -150,18 +170,36 @@ void WcsphSolver::placeBodies(SimulationState& state) {
 bool WcsphSolver::moveDynamicBodies(const InteractionInputs& inputs, SimulationState& state,
                                     double dt) {
     passes_.bodyReactions(inputs, pressureOverDensity2_, contacts_, dt, reactions_);
-    coupling_.advance(bodies_, boundary_, reactions_, dt);
-    bool finite = true;
+    if (!bubbles_ || state.bubbles.empty()) {
+        coupling_.advance(bodies_, boundary_, reactions_, dt);
+        return storeMovedBodies(state);
+    }
+    coupling_.advance(bodies_, boundary_, reactions_, dt,
+                      [&](std::vector<RigidBody>& bodies, double step) {
+                          bubbles_->applyForces(bodies, firstBubble_, state.bubbles, step);
+                          bubbles_->applyPairImpulses(bodies, firstBubble_);
+                      });
+    return storeMovedBodies(state);
+}
+
+bool WcsphSolver::storeMovedBodies(SimulationState& state) const {
+    const auto finite = [](const RigidBodyState& moved) {
+        return moved.position.allFinite() && moved.orientation.coeffs().allFinite() &&
+               moved.linearVelocity.allFinite() && moved.angularVelocity.allFinite();
+    };
+    bool allFinite = true;
     for (std::size_t k = 0; k < state.bodies.size(); ++k) {
         const RigidBody& body = bodies_[sceneryCount_ + k];
         if (!body.isDynamic())
             continue;
         state.bodies[k] = body.state();
-        const RigidBodyState& moved = state.bodies[k];
-        finite = finite && moved.position.allFinite() && moved.orientation.coeffs().allFinite() &&
-                 moved.linearVelocity.allFinite() && moved.angularVelocity.allFinite();
+        allFinite = allFinite && finite(state.bodies[k]);
     }
-    return finite;
+    for (std::size_t k = 0; k < state.bubbles.size(); ++k) {
+        state.bubbles[k].body = bodies_[firstBubble_ + k].state();
+        allFinite = allFinite && finite(state.bubbles[k].body);
+    }
+    return allFinite;
 }
 
 void WcsphSolver::sortByCell(ParticleSet& fluid, StepReport& report) {

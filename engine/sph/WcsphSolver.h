@@ -3,6 +3,7 @@
 // Shepard re-initialisation, Tait equation of state (eq. 3, γ = 7, c = 10·u_max), Monaghan
 // momentum with artificial viscosity (eq. 1), boundary particles for every rigid body, and the
 // contact impulse of the impulse-based boundary force (eq. 4) for water approaching a body.
+#include "bubbles/BubbleDynamics.h"
 #include "rigid/RigidBody.h"
 #include "scene/Scene.h"
 #include "sim/SimulationState.h"
@@ -13,6 +14,7 @@
 #include "sph/RigidCoupling.h"
 #include "sph/StepPhases.h"
 
+#include <optional>
 #include <vector>
 
 namespace airtrap {
@@ -31,14 +33,18 @@ class WcsphSolver {
 public:
     //! `bodies` holds the scenery first (container, obstacles: static, not in the state), then
     //! `bodies.size() − sceneryCount` bodies whose states SimulationState::bodies carries in
-    //! the same order.
+    //! the same order. With bubbles enabled, the state's bubbles join them as bodies.
     WcsphSolver(const SolverSettings& settings, const Aabb& domain, std::vector<RigidBody> bodies,
-                std::size_t sceneryCount = 0);
+                std::size_t sceneryCount = 0, const BubbleSettings& bubbles = {});
 
     //! Takes one step of at most `timeToFrameEnd` seconds; the step is shortened so that frame
     //! times are met exactly without a sliver of a last step. Reorders the particles; moves the
     //! dynamic bodies with the water.
     StepReport step(SimulationState& state, double timeToFrameEnd);
+
+    //! The water around each of the state's bubbles, as the last step measured it (empty without
+    //! bubbles).
+    const std::vector<BubbleSurroundings>& bubbleSurroundings() const;
 
     //! Puts the kinematic bodies of `state` where their paths have them at state.time.
     void followPaths(SimulationState& state);
@@ -56,6 +62,10 @@ public:
     const RigidCoupling& coupling() const { return coupling_; }
     const BoundaryModel& boundary() const { return boundary_; }
     const NeighborGrid& grid() const { return grid_; }
+    //! The water's positions as the last step sorted them onto grid(), before it moved them.
+    const PositionArrays& sortedPositions() const { return sortedPositions_; }
+    //! Index in bodies() of the first bubble's body; the bodies before it are the scene's.
+    std::size_t firstBubbleBody() const { return firstBubble_; }
     StepPhases& phases() { return phases_; }
     //! Heap bytes held by the solver's grids and scratch arrays (not the particle state).
     std::size_t allocatedBytes() const;
@@ -72,9 +82,11 @@ private:
     InteractionConstants interactionConstants() const;
     //! v ← v + Δt a, x ← x + Δt v; returns whether a NaN or infinity appeared.
     bool integrate(ParticleSet& fluid, double dt);
-    //! Copies the state's bodies into bodies_ (kinematic ones on their paths) and places their
-    //! boundary particles.
+    //! Copies the state's bodies into bodies_ (kinematic ones on their paths), makes the
+    //! bubbles' bodies follow the state's bubbles, and places their boundary particles.
     void placeBodies(SimulationState& state);
+    //! Copies the moved bodies back into the state; returns false when one is not finite.
+    bool storeMovedBodies(SimulationState& state) const;
     //! The water's reaction on the dynamic bodies, their contacts and motion over `dt`; returns
     //! false when a body's state is no longer finite.
     bool moveDynamicBodies(const InteractionInputs& inputs, SimulationState& state, double dt);
@@ -88,7 +100,9 @@ private:
     Aabb gridDomain_;
     std::vector<RigidBody> bodies_;
     std::size_t sceneryCount_;
+    std::size_t firstBubble_; //!< index in bodies_ of the first bubble's body
     bool anyBodyMoves_ = false;
+    std::optional<BubbleDynamics> bubbles_;
     BoundaryModel boundary_;
     RigidCoupling coupling_;
     NeighborGrid grid_;

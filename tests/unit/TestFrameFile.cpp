@@ -319,18 +319,23 @@ private Q_SLOTS:
         state.bodies = threeBodies();
         state.bubbles = twoBubbles();
         state.nextBubbleId = 17;
-        const std::vector<std::uint8_t> bytes = encodeFrame(state, randomStats(9));
+        state.bubblesDeleted.deleted = {4, 5, 2, 4};
+        FrameStats stats = randomStats(9);
+        stats.bubbles.created = 3;
+        stats.bubbles.deleted = {1, 0, 2, 0};
+        const std::vector<std::uint8_t> bytes = encodeFrame(state, stats);
         const FrameData decoded = decodeFrame(bytes, kPath);
         QVERIFY(decoded.state == state);
+        QVERIFY(decoded.stats == stats);
         QCOMPARE(decoded.state.nextBubbleId, 17u);
         QVERIFY(std::signbit(decoded.state.bubbles[1].body.linearVelocity.x()));
         QVERIFY(encodeFrame(decoded.state, decoded.stats) == bytes);
-        // BUBL follows BODY: 8 bytes of count and next id, then 152 per bubble.
+        // BUBL follows BODY: 80 bytes of count, next id and tallies, then 152 per bubble.
         const std::size_t at = lastChunkOffset(bytes);
         QCOMPARE(std::memcmp(bytes.data() + at, "BUBL", 4), 0);
         std::uint64_t length = 0;
         std::memcpy(&length, bytes.data() + at + 4, 8);
-        QCOMPARE(length, std::uint64_t(8 + 2 * 152));
+        QCOMPARE(length, std::uint64_t(80 + 2 * 152));
     }
 
     void corruptBubbleChunkDetected() {
@@ -340,7 +345,7 @@ private Q_SLOTS:
         put<std::uint32_t>(bytes, lastChunkOffset(bytes) + 12, 3); // count says 3, holds 2
         resealFrame(bytes);
         const QString message = corruptMessage(bytes);
-        QVERIFY2(message.contains("chunk BUBL is 312 bytes, expected 464 for 3 bubbles"),
+        QVERIFY2(message.contains("chunk BUBL is 384 bytes, expected 536 for 3 bubbles"),
                  qPrintable(message));
     }
 

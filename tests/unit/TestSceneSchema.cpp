@@ -22,7 +22,8 @@ private Q_SLOTS:
             keys.push_back(section.key);
         const std::vector<std::string> expected{"",          "solver",       "frames",
                                                 "container", "fluid_blocks", "obstacles",
-                                                "emitters",  "bodies",       "keyframes"};
+                                                "emitters",  "bodies",       "keyframes",
+                                                "bubbles"};
         QCOMPARE(keys, expected);
         QVERIFY(SceneSchema::findSection("fluid_blocks")->isArray);
         QVERIFY(!SceneSchema::findSection("solver")->isArray);

@@ -123,6 +123,30 @@ private Q_SLOTS:
                  std::string("scene: solver.cfl_factor = 2 is out of range; expected a number in "
                              "[0.05, 0.6]"));
     }
+
+    void bubbleRestitutionsAreOrdered() {
+        Scene scene = validScene();
+        scene.bubbles.approachRestitution = -0.1;
+        scene.bubbles.overlapRestitution = -0.5;
+        QCOMPARE(validationError(scene),
+                 std::string("tank.json: bubbles.approach_restitution = -0.1 exceeds "
+                             "bubbles.overlap_restitution = -0.5; approaching bubbles take at most "
+                             "the overlapping ones' restitution (ε₁ ≤ ε₂ ≤ 0)"));
+        scene.bubbles.approachRestitution = -1.0;
+        scene.bubbles.overlapRestitution = -1.0;
+        QVERIFY(validateScene(scene).empty());
+    }
+
+    void bubbleRiseCapWithinMaxSpeed() {
+        Scene scene = validScene();
+        scene.bubbles.enabled = true;
+        scene.solver.maxSpeed = 2.0;
+        scene.bubbles.maxRiseSpeed = 3.0;
+        const std::string message = validationError(scene);
+        QVERIFY2(contains(message, "bubbles.max_rise_speed = 3 m/s exceeds solver.max_speed = "
+                                   "2 m/s"),
+                 message.c_str());
+    }
 };
 
 QTEST_APPLESS_MAIN(TestSceneValidator)

@@ -1,0 +1,59 @@
+#include "bubbles/BubbleDeletion.h"
+
+#include <algorithm>
+
+namespace airtrap {
+
+void BubbleDeletion::afterStep(std::vector<BubbleState>& bubbles,
+                               const std::vector<BubbleSurroundings>& surroundings, double dt,
+                               BubbleTally& tally) const {
+    const bool measured = surroundings.size() == bubbles.size();
+    std::vector<BubbleTally::Rule> verdicts(bubbles.size(), BubbleTally::RuleCount);
+    for (std::size_t k = 0; k < bubbles.size(); ++k) {
+        BubbleState& bubble = bubbles[k];
+        const BubbleSurroundings* around = measured ? &surroundings[k] : nullptr;
+        bubble.age += dt;
+        bubble.floatingTime = around && around->floating ? bubble.floatingTime + dt : 0.0;
+        verdicts[k] = ownRule(bubble, around);
+    }
+    markOverlaps(bubbles, verdicts);
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < bubbles.size(); ++k) {
+        if (verdicts[k] != BubbleTally::RuleCount) {
+            ++tally.deleted[verdicts[k]];
+            continue;
+        }
+        bubbles[kept++] = bubbles[k];
+    }
+    bubbles.resize(kept);
+}
+
+BubbleTally::Rule BubbleDeletion::ownRule(const BubbleState& bubble,
+                                          const BubbleSurroundings* around) const {
+    if (bubble.age > settings_.maxAge)
+        return BubbleTally::Age;
+    if (bubble.floatingTime > settings_.maxFloatingTime)
+        return BubbleTally::Floating;
+    if (around && around->floating && around->impactSpeed > settings_.impactSpeed)
+        return BubbleTally::Impact;
+    return BubbleTally::RuleCount;
+}
+
+void BubbleDeletion::markOverlaps(const std::vector<BubbleState>& bubbles,
+                                  std::vector<BubbleTally::Rule>& verdicts) const {
+    for (std::size_t a = 0; a < bubbles.size(); ++a)
+        for (std::size_t b = a + 1; b < bubbles.size(); ++b) {
+            if (verdicts[a] != BubbleTally::RuleCount || verdicts[b] != BubbleTally::RuleCount)
+                continue;
+            const double ra = bubbles[a].radius;
+            const double rb = bubbles[b].radius;
+            const double distance = (bubbles[a].body.position - bubbles[b].body.position).norm();
+            const double depth = ra + rb - distance;
+            if (depth <= settings_.maxOverlap * 2.0 * std::min(ra, rb))
+                continue;
+            // The smaller goes; of two equal ones the younger (b: bubbles are oldest first).
+            verdicts[rb <= ra ? b : a] = BubbleTally::Overlap;
+        }
+}
+
+} // namespace airtrap

@@ -1,0 +1,36 @@
+#pragma once
+// The deletion rules of paper §3.4, checked after every step: a bubble is deleted when (1) it is
+// older than the maximum age, (2) it has floated at the free surface longer than the maximum
+// floating time, (3) it overlaps another bubble by more than the maximum share of the smaller
+// one's diameter (the smaller one goes), or (4) it floats and water hits it faster than the
+// impact speed. Each deletion is counted under its rule.
+#include "bubbles/BubbleState.h"
+#include "bubbles/BubbleSurroundings.h"
+#include "bubbles/BubbleTally.h"
+#include "scene/Scene.h"
+
+#include <vector>
+
+namespace airtrap {
+
+class BubbleDeletion {
+public:
+    explicit BubbleDeletion(const BubbleSettings& settings) : settings_(settings) {}
+
+    //! Ages the bubbles by `dt` s, updates their floating time from `surroundings` (one per
+    //! bubble, as the step measured them; may be empty) and deletes those a rule condemns.
+    void afterStep(std::vector<BubbleState>& bubbles,
+                   const std::vector<BubbleSurroundings>& surroundings, double dt,
+                   BubbleTally& tally) const;
+
+private:
+    //! The rule that deletes bubble `k`, or RuleCount when none does (overlap aside).
+    BubbleTally::Rule ownRule(const BubbleState& bubble, const BubbleSurroundings* around) const;
+    //! Marks the smaller of every pair overlapping beyond the limit.
+    void markOverlaps(const std::vector<BubbleState>& bubbles,
+                      std::vector<BubbleTally::Rule>& verdicts) const;
+
+    BubbleSettings settings_;
+};
+
+} // namespace airtrap

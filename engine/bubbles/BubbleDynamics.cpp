@@ -1,0 +1,182 @@
+#include "bubbles/BubbleDynamics.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace airtrap {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+//! Directions around a bubble whose water cover is judged apart: the 6 axes and 8 diagonals.
+const std::array<Vec3d, 14>& coverDirections() {
+    static const std::array<Vec3d, 14> directions = [] {
+        std::array<Vec3d, 14> d;
+        int n = 0;
+        for (int axis = 0; axis < 3; ++axis)
+            for (double sign : {-1.0, 1.0})
+                d[n++] = sign * Vec3d::Unit(axis);
+        for (double x : {-1.0, 1.0})
+            for (double y : {-1.0, 1.0})
+                for (double z : {-1.0, 1.0})
+                    d[n++] = Vec3d(x, y, z).normalized();
+        return d;
+    }();
+    return directions;
+}
+
+std::size_t nearestDirection(const Vec3d& direction) {
+    const auto& directions = coverDirections();
+    std::size_t best = 0;
+    for (std::size_t k = 1; k < directions.size(); ++k)
+        if (directions[k].dot(direction) > directions[best].dot(direction))
+            best = k;
+    return best;
+}
+
+} // namespace
+
+BubbleDynamics::BubbleDynamics(const BubbleSettings& bubbles, const SolverSettings& solver,
+                               const CubicSplineKernel& kernel)
+    : settings_(bubbles), restDensity_(solver.restDensity), spacing_(solver.particleSpacing),
+      support_(kernel.supportRadius()), gravity_(solver.gravity), kernel_(kernel),
+      factory_(bubbles, solver, kernel),
+      pairs_(bubbles.approachRestitution, bubbles.overlapRestitution) {}
+
+void BubbleDynamics::syncBodies(std::vector<RigidBody>& bodies, std::size_t first,
+                                const std::vector<BubbleState>& bubbles) {
+    std::vector<RigidBody> kept;
+    kept.reserve(bubbles.size());
+    std::size_t old = 0;
+    // Both lists are in creation order (ids increase), so one merge pass finds the kept bodies.
+    for (const BubbleState& bubble : bubbles) {
+        while (old < bodyIds_.size() && bodyIds_[old] < bubble.id)
+            ++old;
+        if (old < bodyIds_.size() && bodyIds_[old] == bubble.id) {
+            kept.push_back(std::move(bodies[first + old]));
+            kept.back().setState(bubble.body);
+        } else {
+            kept.push_back(factory_.build(bubble));
+        }
+    }
+    bodies.erase(bodies.begin() + static_cast<std::ptrdiff_t>(first), bodies.end());
+    std::move(kept.begin(), kept.end(), std::back_inserter(bodies));
+    bodyIds_.clear();
+    radii_.clear();
+    for (const BubbleState& bubble : bubbles) {
+        bodyIds_.push_back(bubble.id);
+        radii_.push_back(bubble.radius);
+    }
+}
+
+double BubbleDynamics::riseSpeed(double radius) const {
+    const double stokes =
+        2.0 / 9.0 * gravity_.norm() * radius * radius / settings_.kinematicViscosity;
+    return std::min(stokes, settings_.maxRiseSpeed);
+}
+
+void BubbleDynamics::measureSurroundings(const std::vector<RigidBody>& bodies, std::size_t first,
+                                         const ParticleSet& fluid,
+                                         const PositionArrays& positions,
+                                         const NeighborGrid& grid) {
+    surroundings_.resize(bodyIds_.size());
+    for (std::size_t k = 0; k < bodyIds_.size(); ++k)
+        surroundings_[k] = measureOne(bodies[first + k], radii_[k], fluid, positions, grid);
+}
+
+BubbleSurroundings BubbleDynamics::measureOne(const RigidBody& body, double radius,
+                                              const ParticleSet& fluid,
+                                              const PositionArrays& positions,
+                                              const NeighborGrid& grid) const {
+    const Vec3d centre = body.position();
+    // The water touching a bubble is dragged along with it; the ambient flow is read one
+    // support radius further out, beyond the layer the bubble carries.
+    const double ambientFrom = support_;
+    const double reach = radius + 2.0 * support_;
+    const Vec3i low = grid.cellCoordinates((centre - Vec3d::Constant(reach)).cast<float>());
+    const Vec3i high = grid.cellCoordinates((centre + Vec3d::Constant(reach)).cast<float>());
+    const double touching = 1.5 * spacing_; // water rests a spacing from the boundary layer
+    std::array<bool, 14> wet{};
+    double weightSum = 0.0;
+    Vec3d weightedVelocity = Vec3d::Zero();
+    BubbleSurroundings result;
+    for (int k = low.z(); k <= high.z(); ++k)
+        for (int j = low.y(); j <= high.y(); ++j) {
+            // The cells of one row are consecutive, and so are their particles.
+            const std::uint32_t begin = grid.cellRange(grid.linearIndex(low.x(), j, k)).first;
+            const std::uint32_t last = grid.cellRange(grid.linearIndex(high.x(), j, k)).second;
+            for (std::uint32_t s = begin; s < last; ++s) {
+                const Vec3d offset = positions[s].cast<double>() - centre;
+                const double distance = offset.norm();
+                const double gap = distance - radius;
+                if (gap >= reach - radius || distance == 0.0)
+                    continue;
+                const Vec3d velocity = fluid.velocities[s].cast<double>();
+                if (gap >= ambientFrom) {
+                    weightSum += 1.0;
+                    weightedVelocity += velocity;
+                    continue;
+                }
+                if (gap >= touching)
+                    continue;
+                const Vec3d outward = offset / distance;
+                wet[nearestDirection(outward)] = true;
+                const Vec3d surfacePoint = centre + radius * outward;
+                const double approach = -(velocity - body.velocityAt(surfacePoint)).dot(outward);
+                result.impactSpeed = std::max(result.impactSpeed, approach);
+            }
+        }
+    result.waterVelocity = weightSum > 0.0 ? Vec3d(weightedVelocity / weightSum)
+                                           : body.linearVelocity();
+    result.wettedShare = double(std::count(wet.begin(), wet.end(), true)) / double(wet.size());
+    const Vec3d up = gravity_.squaredNorm() > 0.0 ? Vec3d(-gravity_.normalized()) : Vec3d::UnitY();
+    result.floating = !wet[nearestDirection(up)];
+    return result;
+}
+
+void BubbleDynamics::applyForces(std::vector<RigidBody>& bodies, std::size_t first,
+                                 const std::vector<BubbleState>& start, double dt) const {
+    const bool steer = gravity_.squaredNorm() > 0.0;
+    const Vec3d up = steer ? Vec3d(-gravity_.normalized()) : Vec3d::UnitY();
+    for (std::size_t k = 0; k < bodyIds_.size(); ++k) {
+        RigidBody& body = bodies[first + k];
+        const BubbleSurroundings& around = surroundings_.at(k);
+        RigidBodyState state = body.state();
+        const double radius = radii_[k];
+        const double stokesDrag = 6.0 * kPi * restDensity_ * settings_.kinematicViscosity * radius;
+        const double rate = stokesDrag * body.inertia().inverseMass() + settings_.drag;
+        // Implicit: v' = v + Δt·rate·(ū − v') stays between v and ū for any step.
+        Vec3d velocity = (state.linearVelocity + rate * dt * around.waterVelocity) / (1.0 + rate * dt);
+        if (steer && !around.floating) {
+            const double target = around.waterVelocity.dot(up) + riseSpeed(radius);
+            const double relax = dt / settings_.riseTime;
+            const double startSpeed = start.at(k).body.linearVelocity.dot(up);
+            const double steered = (startSpeed + relax * target) / (1.0 + relax);
+            velocity += (steered - velocity.dot(up)) * up;
+        }
+        state.linearVelocity = velocity;
+        body.setState(state);
+    }
+}
+
+void BubbleDynamics::applyPairImpulses(std::vector<RigidBody>& bodies, std::size_t first) const {
+    const std::size_t count = bodyIds_.size();
+    for (std::size_t a = 0; a < count; ++a)
+        for (std::size_t b = a + 1; b < count; ++b) {
+            RigidBody& bodyA = bodies[first + a];
+            RigidBody& bodyB = bodies[first + b];
+            const double reach = radii_[a] + radii_[b];
+            if ((bodyA.position() - bodyB.position()).squaredNorm() >= reach * reach)
+                continue;
+            RigidBodyState stateA = bodyA.state();
+            RigidBodyState stateB = bodyB.state();
+            if (pairs_.apply(stateA, bodyA.inertia(), radii_[a], stateB, bodyB.inertia(),
+                             radii_[b]) > 0.0) {
+                bodyA.setState(stateA);
+                bodyB.setState(stateB);
+            }
+        }
+}
+
+} // namespace airtrap

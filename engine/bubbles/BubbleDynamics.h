@@ -1,0 +1,71 @@
+#pragma once
+// The forces a bubble feels beyond the impulse-based boundary force every body gets (paper
+// §3.3, DESIGN §4 "Bubbles"):
+//  - the auxiliary buoyancy of eq. 5: a submerged bubble's vertical speed is steered toward the
+//    surrounding water's plus the Stokes speed v_s = 2/9 g R²/ν, capped. The water's pressure
+//    gives a light body its buoyancy by itself, but how fast a sphere a few particles across
+//    rises through SPH water depends on the resolution; the steering replaces the step's
+//    vertical change with a relaxation toward the target over the rise time τ, so the rise
+//    meets the target whatever the resolution. A floating bubble is not steered: it rests on
+//    its buoyancy.
+//  - the drag of eq. 6, F = −(μ + k)Δv against the water's velocity around it, with the Stokes
+//    drag 6πρ₀νR for μ and k = drag rate × mass, integrated implicitly: explicit drag on a body
+//    this light is unstable.
+//  - bubble–bubble impulses with non-positive restitution (BubblePairImpulse).
+// The bubbles' bodies sit at the end of the solver's body list, from index `first` on.
+#include "bubbles/BubbleBodyFactory.h"
+#include "bubbles/BubblePairImpulse.h"
+#include "bubbles/BubbleState.h"
+#include "bubbles/BubbleSurroundings.h"
+#include "sph/NeighborGrid.h"
+#include "sph/NeighborSweep.h"
+#include "sph/ParticleSet.h"
+
+#include <vector>
+
+namespace airtrap {
+
+class BubbleDynamics {
+public:
+    BubbleDynamics(const BubbleSettings& bubbles, const SolverSettings& solver,
+                   const CubicSplineKernel& kernel);
+
+    //! Makes bodies[first…] the bodies of `bubbles`, in their order and states; bodies of
+    //! bubbles already there are kept, so only new bubbles are sampled.
+    void syncBodies(std::vector<RigidBody>& bodies, std::size_t first,
+                    const std::vector<BubbleState>& bubbles);
+
+    //! Measures the water around each bubble body from the step's sorted water.
+    void measureSurroundings(const std::vector<RigidBody>& bodies, std::size_t first,
+                             const ParticleSet& fluid, const PositionArrays& positions,
+                             const NeighborGrid& grid);
+    const std::vector<BubbleSurroundings>& surroundings() const { return surroundings_; }
+
+    //! Drag and steering, once the water's force and gravity have changed the bodies' velocities
+    //! for a step of `dt` s; `start` holds the bubbles as the step began.
+    void applyForces(std::vector<RigidBody>& bodies, std::size_t first,
+                     const std::vector<BubbleState>& start, double dt) const;
+    //! The impulses between touching bubbles.
+    void applyPairImpulses(std::vector<RigidBody>& bodies, std::size_t first) const;
+
+    //! m/s, the Stokes rise speed of a bubble of `radius` m (eq. 5), capped.
+    double riseSpeed(double radius) const;
+
+private:
+    BubbleSurroundings measureOne(const RigidBody& body, double radius, const ParticleSet& fluid,
+                                  const PositionArrays& positions, const NeighborGrid& grid) const;
+
+    BubbleSettings settings_;
+    double restDensity_;
+    double spacing_;
+    float support_;
+    Vec3d gravity_;
+    CubicSplineKernel kernel_;
+    BubbleBodyFactory factory_;
+    BubblePairImpulse pairs_;
+    std::vector<std::uint32_t> bodyIds_; //!< id of the bubble of each body from `first` on
+    std::vector<double> radii_;
+    std::vector<BubbleSurroundings> surroundings_;
+};
+
+} // namespace airtrap

@@ -1,0 +1,52 @@
+#pragma once
+// Creates bubbles in the air pockets the water encloses (paper §3.4, DESIGN §4 "Creation"),
+// once per frame: finds the pockets on the step's neighbour grid (cells inside a rigid body or an
+// existing bubble are not air), fits a bubble to each, and turns up to the per-frame limit of
+// them, chosen at random with the scene's seed and the frame number, into bubbles moving with the
+// water around them.
+#include "bubbles/AirPocketFinder.h"
+#include "bubbles/BubbleFitter.h"
+#include "rigid/RigidBody.h"
+#include "scene/Scene.h"
+#include "sim/SimulationState.h"
+#include "sph/NeighborSweep.h"
+
+#include <vector>
+
+namespace airtrap {
+
+class BubbleSpawner {
+public:
+    BubbleSpawner(const BubbleSettings& settings, double spacing, std::uint64_t seed);
+
+    //! The water as the spawner reads it: the grid of the last step, its sorted positions, and
+    //! the state's particles in that order (their velocities).
+    struct Water {
+        const NeighborGrid& grid;
+        const PositionArrays& positions;
+        const ParticleSet& particles;
+    };
+
+    //! Adds the frame's new bubbles to `state` (born in `frame`); `solids` are the rigid bodies
+    //! bubbles may not start in (not the bubbles' own bodies). Returns how many were made.
+    std::size_t spawn(SimulationState& state, const Water& water,
+                      const std::vector<const RigidBody*>& solids, int frame);
+
+private:
+    //! Whether a grid cell centred at `centre` reaches into a body or a bubble.
+    bool cellIsSolid(const Vec3d& centre, double halfDiagonal, const SimulationState& state,
+                     const std::vector<const RigidBody*>& solids) const;
+    //! The fitted bubbles that keep half a spacing from every body, as candidates.
+    std::vector<FittedBubble> candidates(const std::vector<AirPocket>& pockets, const Water& water,
+                                         const std::vector<const RigidBody*>& solids) const;
+    //! The mean velocity of the water within one support radius of the bubble's surface.
+    Vec3d surroundingVelocity(const FittedBubble& bubble, const Water& water) const;
+
+    BubbleSettings settings_;
+    double spacing_;
+    std::uint64_t seed_;
+    AirPocketFinder finder_;
+    BubbleFitter fitter_;
+};
+
+} // namespace airtrap
