@@ -12,9 +12,12 @@ void BubbleDeletion::afterStep(std::vector<BubbleState>& bubbles,
     for (std::size_t k = 0; k < bubbles.size(); ++k) {
         BubbleState& bubble = bubbles[k];
         const BubbleSurroundings* around = measured ? &surroundings[k] : nullptr;
+        // Water landing on a floating bubble covers it in the step it hits: the bubble was
+        // floating if it floated up to this step.
+        const bool wasFloating = bubble.floatingTime > 0.0 || (around && around->floating);
         bubble.age += dt;
         bubble.floatingTime = around && around->floating ? bubble.floatingTime + dt : 0.0;
-        verdicts[k] = ownRule(bubble, around);
+        verdicts[k] = ownRule(bubble, around, wasFloating);
     }
     markOverlaps(bubbles, verdicts);
     std::size_t kept = 0;
@@ -29,12 +32,13 @@ void BubbleDeletion::afterStep(std::vector<BubbleState>& bubbles,
 }
 
 BubbleTally::Rule BubbleDeletion::ownRule(const BubbleState& bubble,
-                                          const BubbleSurroundings* around) const {
+                                          const BubbleSurroundings* around,
+                                          bool wasFloating) const {
     if (bubble.age > settings_.maxAge)
         return BubbleTally::Age;
     if (bubble.floatingTime > settings_.maxFloatingTime)
         return BubbleTally::Floating;
-    if (around && around->floating && around->impactSpeed > settings_.impactSpeed)
+    if (around && wasFloating && around->impactSpeed > settings_.impactSpeed)
         return BubbleTally::Impact;
     return BubbleTally::RuleCount;
 }

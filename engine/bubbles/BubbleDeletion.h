@@ -24,8 +24,9 @@ public:
                    BubbleTally& tally) const;
 
 private:
-    //! The rule that deletes bubble `k`, or RuleCount when none does (overlap aside).
-    BubbleTally::Rule ownRule(const BubbleState& bubble, const BubbleSurroundings* around) const;
+    //! The rule that deletes `bubble`, or RuleCount when none does (overlap aside).
+    BubbleTally::Rule ownRule(const BubbleState& bubble, const BubbleSurroundings* around,
+                              bool wasFloating) const;
     //! Marks the smaller of every pair overlapping beyond the limit.
     void markOverlaps(const std::vector<BubbleState>& bubbles,
                       std::vector<BubbleTally::Rule>& verdicts) const;

@@ -31,18 +31,21 @@ BubbleSpawner::BubbleSpawner(const BubbleSettings& settings, double spacing, std
       fitter_(spacing, settings.minRadius * spacing) {}
 
 std::size_t BubbleSpawner::spawn(SimulationState& state, const Water& water,
-                                 const std::vector<const RigidBody*>& solids, int frame) {
-    if (settings_.maxNewPerFrame <= 0)
+                                 const std::vector<const RigidBody*>& solids, int frame,
+                                 std::size_t limit) {
+    if (limit == 0)
         return 0;
-    const double halfDiagonal = 0.5 * std::sqrt(3.0) * water.grid.cellSize();
-    const std::vector<AirPocket> pockets =
-        finder_.find(water.grid, [&](const Vec3d& centre) {
-            return cellIsSolid(centre, halfDiagonal, state, solids);
-        });
+    const NeighborGrid& grid = water.grid;
+    markSolidCells(grid, state, solids);
+    const std::vector<AirPocket> pockets = finder_.find(grid, [&](const Vec3d& centre) {
+        const Vec3i c = grid.cellCoordinates(centre.cast<float>());
+        return solid_[grid.linearIndex(c.x(), c.y(), c.z())] != 0;
+    });
     std::vector<FittedBubble> pool = candidates(pockets, water, solids);
-    SplitMix64 random(seed_ ^ (0xA1B2C3D4E5F60718ull * static_cast<std::uint64_t>(frame)));
+    // The step count makes every search's choice its own, and the same on a resumed bake.
+    SplitMix64 random(seed_ ^ (0xA1B2C3D4E5F60718ull * (state.steps + 1)));
     std::size_t made = 0;
-    while (!pool.empty() && made < static_cast<std::size_t>(settings_.maxNewPerFrame)) {
+    while (!pool.empty() && made < limit) {
         const std::size_t pick = random.below(pool.size());
         const FittedBubble fitted = pool[pick];
         pool.erase(pool.begin() + static_cast<std::ptrdiff_t>(pick));
@@ -60,16 +63,55 @@ std::size_t BubbleSpawner::spawn(SimulationState& state, const Water& water,
     return made;
 }
 
-bool BubbleSpawner::cellIsSolid(const Vec3d& centre, double halfDiagonal,
-                                const SimulationState& state,
-                                const std::vector<const RigidBody*>& solids) const {
-    for (const BubbleState& bubble : state.bubbles)
-        if ((centre - bubble.body.position).norm() < bubble.radius + halfDiagonal)
-            return true;
+namespace {
+
+Vec3d cellCentre(const NeighborGrid& grid, int i, int j, int k) {
+    return (grid.origin() + (Vec3f(float(i), float(j), float(k)) + Vec3f::Constant(0.5f)) *
+                                grid.cellSize())
+        .cast<double>();
+}
+
+} // namespace
+
+void BubbleSpawner::markSolidCells(const NeighborGrid& grid, const SimulationState& state,
+                                   const std::vector<const RigidBody*>& solids) {
+    // A cell reaches into a solid when the solid comes nearer its centre than its corners are.
+    const double halfDiagonal = 0.5 * std::sqrt(3.0) * grid.cellSize();
+    const Vec3i& dims = grid.dimensions();
+    if (staticSolid_.size() != grid.cellTotal()) {
+        staticSolid_.assign(grid.cellTotal(), 0);
+        for (int k = 0; k < dims.z(); ++k)
+            for (int j = 0; j < dims.y(); ++j)
+                for (int i = 0; i < dims.x(); ++i)
+                    for (const RigidBody* body : solids)
+                        if (!body->isMoving() &&
+                            body->signedDistance(cellCentre(grid, i, j, k)) < halfDiagonal)
+                            staticSolid_[grid.linearIndex(i, j, k)] = 1;
+    }
+    solid_ = staticSolid_;
     for (const RigidBody* body : solids)
-        if (body->signedDistance(centre) < halfDiagonal)
-            return true;
-    return false;
+        if (body->isMoving())
+            markAround(grid, body->shapePose().position,
+                       body->shape().boundingRadius() + halfDiagonal, solid_,
+                       [&](const Vec3d& x) { return body->signedDistance(x) < halfDiagonal; });
+    for (const BubbleState& bubble : state.bubbles) {
+        const double reach = bubble.radius + halfDiagonal;
+        markAround(grid, bubble.body.position, reach, solid_, [&](const Vec3d& x) {
+            return (x - bubble.body.position).squaredNorm() < reach * reach;
+        });
+    }
+}
+
+template <class Inside>
+void BubbleSpawner::markAround(const NeighborGrid& grid, const Vec3d& centre, double reach,
+                              std::vector<std::uint8_t>& mask, Inside&& inside) const {
+    const Vec3i low = grid.cellCoordinates((centre - Vec3d::Constant(reach)).cast<float>());
+    const Vec3i high = grid.cellCoordinates((centre + Vec3d::Constant(reach)).cast<float>());
+    for (int k = low.z(); k <= high.z(); ++k)
+        for (int j = low.y(); j <= high.y(); ++j)
+            for (int i = low.x(); i <= high.x(); ++i)
+                if (inside(cellCentre(grid, i, j, k)))
+                    mask[grid.linearIndex(i, j, k)] = 1;
 }
 
 std::vector<FittedBubble> BubbleSpawner::candidates(const std::vector<AirPocket>& pockets,

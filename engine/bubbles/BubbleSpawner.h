@@ -1,9 +1,8 @@
 #pragma once
-// Creates bubbles in the air pockets the water encloses (paper §3.4, DESIGN §4 "Creation"),
-// once per frame: finds the pockets on the step's neighbour grid (cells inside a rigid body or an
-// existing bubble are not air), fits a bubble to each, and turns up to the per-frame limit of
-// them, chosen at random with the scene's seed and the frame number, into bubbles moving with the
-// water around them.
+// Creates bubbles in the air pockets the water encloses (paper §3.4, DESIGN §4 "Creation"):
+// finds the pockets on the step's neighbour grid (cells inside a rigid body or an existing bubble
+// are not air), fits a bubble to each, and turns up to a given number of them, chosen at random
+// with the scene's seed and the step count, into bubbles moving with the water around them.
 #include "bubbles/AirPocketFinder.h"
 #include "bubbles/BubbleFitter.h"
 #include "rigid/RigidBody.h"
@@ -27,15 +26,22 @@ public:
         const ParticleSet& particles;
     };
 
-    //! Adds the frame's new bubbles to `state` (born in `frame`); `solids` are the rigid bodies
-    //! bubbles may not start in (not the bubbles' own bodies). Returns how many were made.
+    //! Adds at most `limit` new bubbles to `state`, born in `frame`; `solids` are the rigid
+    //! bodies bubbles may not start in (not the bubbles' own bodies). Returns how many were made.
     std::size_t spawn(SimulationState& state, const Water& water,
-                      const std::vector<const RigidBody*>& solids, int frame);
+                      const std::vector<const RigidBody*>& solids, int frame, std::size_t limit);
 
 private:
-    //! Whether a grid cell centred at `centre` reaches into a body or a bubble.
-    bool cellIsSolid(const Vec3d& centre, double halfDiagonal, const SimulationState& state,
-                     const std::vector<const RigidBody*>& solids) const;
+    //! Marks in solid_ the cells of `grid` that reach into a body or a bubble. The static bodies'
+    //! cells are found once (the grid's layout never changes); moving bodies and bubbles mark
+    //! only the cells around them, so a search costs a pass over the cells, not one distance
+    //! query per cell and body.
+    void markSolidCells(const NeighborGrid& grid, const SimulationState& state,
+                        const std::vector<const RigidBody*>& solids);
+    //! Marks the cells within `reach` of `centre` for which `inside(cellCentre)` holds.
+    template <class Inside>
+    void markAround(const NeighborGrid& grid, const Vec3d& centre, double reach,
+                    std::vector<std::uint8_t>& mask, Inside&& inside) const;
     //! The fitted bubbles that keep half a spacing from every body, as candidates.
     std::vector<FittedBubble> candidates(const std::vector<AirPocket>& pockets, const Water& water,
                                          const std::vector<const RigidBody*>& solids) const;
@@ -47,6 +53,8 @@ private:
     std::uint64_t seed_;
     AirPocketFinder finder_;
     BubbleFitter fitter_;
+    std::vector<std::uint8_t> staticSolid_; //!< per grid cell: reaches into a static body
+    std::vector<std::uint8_t> solid_;       //!< the same with moving bodies and bubbles
 };
 
 } // namespace airtrap

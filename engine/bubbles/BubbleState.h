@@ -9,7 +9,7 @@ namespace airtrap {
 
 struct BubbleState {
     std::uint32_t id = 0;
-    std::int32_t birthFrame = 0;      //!< the frame whose end created it
+    std::int32_t birthFrame = 0;      //!< the first frame that holds it
     double radius = 0.0;              //!< m
     RigidBodyState body;              //!< centre, orientation and velocities
     double age = 0.0;                 //!< s since creation

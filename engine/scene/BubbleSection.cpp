@@ -41,8 +41,18 @@ std::vector<BoundParameter> creationParameters() {
                             .maximum = 1000,
                             .defaultValue = 5LL,
                             .help = "At most this many pockets, chosen at random with the "
-                                    "scene's seed, become bubbles at the end of each frame."},
+                                    "scene's seed, become bubbles in each frame."},
                            &BubbleSettings::maxNewPerFrame),
+        bind<BubbleAccess>({.key = "pocket_interval",
+                            .label = "Pocket search interval",
+                            .unit = "steps",
+                            .minimum = 1,
+                            .maximum = 10000,
+                            .defaultValue = 10LL,
+                            .help = "Steps between searches for air pockets. Without air "
+                                    "pressure a trapped pocket closes within a few hundredths "
+                                    "of a second, so it must be found soon after it forms."},
+                           &BubbleSettings::pocketInterval),
     };
 }
 

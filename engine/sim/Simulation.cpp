@@ -106,7 +106,6 @@ Simulation::Advance Simulation::advanceFrame(Interrupter& interrupter, const Ste
             return Advance::Interrupted;
     }
 
-    createBubbles(nextFrame);
     state_.frame = nextFrame;
     lastFrameStats_ = measure(state_.fluid);
     lastFrameStats_.bubbles = frameBubbles_;
@@ -141,17 +140,21 @@ void Simulation::afterStep(const StepReport& report, double frameEnd) {
         frameBubbles_ += deleted;
         state_.bubblesDeleted += deleted;
     }
+    if (bubbleSpawner_ && state_.steps % scene_.bubbles.pocketInterval == 0)
+        createBubbles(state_.frame + 1);
 }
 
 void Simulation::createBubbles(int frame) {
-    if (!bubbleSpawner_ || state_.steps == 0)
-        return; // no step yet: the grid holds no water
+    const std::uint64_t limit = static_cast<std::uint64_t>(scene_.bubbles.maxNewPerFrame);
+    if (frameBubbles_.created >= limit)
+        return;
     StepPhases::Scope scope(solver_->phases(), StepPhases::BubblePockets);
     std::vector<const RigidBody*> solids;
     for (std::size_t k = 0; k < solver_->firstBubbleBody(); ++k)
         solids.push_back(&solver_->bodies()[k]);
     const BubbleSpawner::Water water{solver_->grid(), solver_->sortedPositions(), state_.fluid};
-    frameBubbles_.created += bubbleSpawner_->spawn(state_, water, solids, frame);
+    frameBubbles_.created +=
+        bubbleSpawner_->spawn(state_, water, solids, frame, limit - frameBubbles_.created);
 }
 
 void Simulation::emitInflow(double from, double to) {

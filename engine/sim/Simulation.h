@@ -57,10 +57,12 @@ private:
                      std::size_t particlesAtStart) const;
     //! Adds the inflow layers due during the step that just went from `from` to `to`.
     void emitInflow(double from, double to);
-    //! The bookkeeping after every solver step: time, kinematic paths, inflow, bubble deletion.
+    //! The bookkeeping after every solver step: time, kinematic paths, inflow, bubble deletion
+    //! and, every bubbles.pocket_interval steps, creation.
     //! `frameEnd` is the time the frame under way ends at (s).
     void afterStep(const StepReport& report, double frameEnd);
-    //! Turns the air pockets of the last step's grid into bubbles born in `frame`.
+    //! Turns air pockets of the last step's grid into bubbles born in `frame`, within what is
+    //! left of the frame's creation limit.
     void createBubbles(int frame);
 
     Scene scene_;

@@ -3,58 +3,20 @@
 namespace airtrap {
 
 BoundaryModel::BoundaryModel(const Aabb& gridDomain, float cellSize, float restDensity)
-    : restDensity_(restDensity), grid_(gridDomain, cellSize) {}
+    : static_(gridDomain, cellSize, restDensity), moving_(gridDomain, cellSize, restDensity) {}
 
 void BoundaryModel::rebuild(const std::vector<RigidBody>& bodies) {
-    std::size_t total = 0;
-    for (const RigidBody& body : bodies)
-        total += body.boundary().size();
-    const bool firstBuild = placedBodies_ != bodies.size() || unsortedPositions_.size() != total;
-    if (firstBuild) {
-        unsortedPositions_.resize(total);
-        unsortedNormals_.resize(total);
-        unsortedVelocities_.resize(total);
-        unsortedPsi_.resize(total);
-        unsortedBodyOf_.resize(total);
+    std::vector<std::uint32_t> staticMembers;
+    movingMembers_.clear();
+    for (std::uint32_t index = 0; index < bodies.size(); ++index)
+        (bodies[index].isMoving() ? movingMembers_ : staticMembers).push_back(index);
+    if (!staticPlaced_ || staticMembers != staticMembers_) {
+        staticMembers_ = std::move(staticMembers);
+        static_.rebuild(bodies, staticMembers_);
+        staticPlaced_ = true;
     }
-    std::size_t first = 0;
-    for (std::size_t index = 0; index < bodies.size(); ++index) {
-        if (firstBuild || bodies[index].isMoving())
-            placeBody(bodies, index, first);
-        first += bodies[index].boundary().size();
-    }
-    placedBodies_ = bodies.size();
-    grid_.build(unsortedPositions_);
-    const auto& order = grid_.order();
-    const std::size_t n = order.size();
-    positions_.resize(n);
-    normals_.resize(n);
-    velocities_.resize(n);
-    psi_.resize(n);
-    bodyOf_.resize(n);
-    for (std::size_t s = 0; s < n; ++s) {
-        const std::uint32_t from = order[s];
-        positions_[s] = unsortedPositions_[from];
-        normals_[s] = unsortedNormals_[from];
-        velocities_[s] = unsortedVelocities_[from];
-        psi_[s] = unsortedPsi_[from];
-        bodyOf_[s] = unsortedBodyOf_[from];
-    }
+    moving_.rebuild(bodies, movingMembers_);
     gatherTerms(bodies);
-}
-
-void BoundaryModel::placeBody(const std::vector<RigidBody>& bodies, std::size_t index,
-                              std::size_t first) {
-    const RigidBody& body = bodies[index];
-    const BoundaryParticles& local = body.boundary();
-    for (std::size_t b = 0; b < local.size(); ++b) {
-        const Vec3f x = body.toWorld(local.positions[b]);
-        unsortedPositions_[first + b] = x;
-        unsortedNormals_[first + b] = body.directionToWorld(local.normals[b]);
-        unsortedVelocities_[first + b] = body.velocityAt(x);
-        unsortedPsi_[first + b] = restDensity_ * local.volumes[b];
-        unsortedBodyOf_[first + b] = static_cast<std::uint32_t>(index);
-    }
 }
 
 void BoundaryModel::gatherTerms(const std::vector<RigidBody>& bodies) {
@@ -74,14 +36,8 @@ void BoundaryModel::gatherTerms(const std::vector<RigidBody>& bodies) {
 }
 
 std::size_t BoundaryModel::allocatedBytes() const {
-    return grid_.allocatedBytes() +
-           (positions_.capacity() + normals_.capacity() + velocities_.capacity()) * sizeof(Vec3f) +
-           psi_.capacity() * sizeof(float) + bodyOf_.capacity() * sizeof(std::uint32_t) +
-           (unsortedPositions_.capacity() + unsortedNormals_.capacity() +
-            unsortedVelocities_.capacity()) *
-               sizeof(Vec3f) +
-           unsortedPsi_.capacity() * sizeof(float) +
-           unsortedBodyOf_.capacity() * sizeof(std::uint32_t);
+    return static_.allocatedBytes() + moving_.allocatedBytes() +
+           terms_.capacity() * sizeof(BodyContactTerms);
 }
 
 } // namespace airtrap

@@ -1,12 +1,13 @@
 #pragma once
-// The boundary particles of every rigid body in world space, sorted on their own neighbour grid
-// (same cell layout as the water's). Each carries Ψ_b = ρ₀ V_b, the mass it stands in for in the
-// water's density rate and pressure force (Akinci et al. 2012), its normal for the contact
-// impulse (paper eq. 4), its velocity and the index of its body.
-#include "rigid/RigidBody.h"
+// The boundary particles of every rigid body, in two layers: the static bodies' (the container,
+// obstacles, static scene bodies), placed and sorted once, and the moving bodies' (dynamic,
+// kinematic, bubbles), placed and sorted every step. Apart, a bubble or a dropped ball costs a
+// sort of its own few particles per step, not of the whole tank's. Also the contact terms of
+// every body (paper eq. 4).
 #include "sph/BodyContactTerms.h"
-#include "sph/NeighborGrid.h"
+#include "sph/BoundaryLayer.h"
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -16,45 +17,29 @@ class BoundaryModel {
 public:
     BoundaryModel(const Aabb& gridDomain, float cellSize, float restDensity);
 
-    //! Gathers the bodies' boundary particles in world space at their current poses and sorts
-    //! them.
+    //! Places the bodies at their current poses: the static ones only the first time (or when
+    //! the set of static bodies changed), the moving ones every time.
     void rebuild(const std::vector<RigidBody>& bodies);
 
-    std::size_t size() const { return positions_.size(); }
-    const NeighborGrid& grid() const { return grid_; }
-    const std::vector<Vec3f>& positions() const { return positions_; }
-    const std::vector<Vec3f>& normals() const { return normals_; }
-    const std::vector<Vec3f>& velocities() const { return velocities_; }
-    const std::vector<float>& psi() const { return psi_; }
-    //! Index into the bodies of rebuild() of each sorted particle's body.
-    const std::vector<std::uint32_t>& bodyOf() const { return bodyOf_; }
+    const BoundaryLayer& staticLayer() const { return static_; }
+    //! Holds every dynamic body's particles: the water's reaction is gathered here.
+    const BoundaryLayer& movingLayer() const { return moving_; }
+    std::array<const BoundaryLayer*, 2> layers() const { return {&static_, &moving_}; }
+    std::size_t size() const { return static_.size() + moving_.size(); }
     const BodyContactTerms& contactTerms(std::uint32_t body) const { return terms_[body]; }
     //! Whether any body is dynamic, so that the water's reaction must be gathered.
     bool hasDynamicBodies() const { return hasDynamicBodies_; }
     std::size_t allocatedBytes() const;
 
 private:
-    //! Writes the world-space data of `bodies[index]`'s particles into the unsorted arrays from
-    //! `first` on.
-    void placeBody(const std::vector<RigidBody>& bodies, std::size_t index, std::size_t first);
     void gatherTerms(const std::vector<RigidBody>& bodies);
 
-    float restDensity_;
-    NeighborGrid grid_;
-    std::vector<Vec3f> positions_;
-    std::vector<Vec3f> normals_;
-    std::vector<Vec3f> velocities_;
-    std::vector<float> psi_;
-    std::vector<std::uint32_t> bodyOf_;
+    BoundaryLayer static_;
+    BoundaryLayer moving_;
+    std::vector<std::uint32_t> staticMembers_;
+    std::vector<std::uint32_t> movingMembers_;
+    bool staticPlaced_ = false;
     std::vector<BodyContactTerms> terms_;
-    // The same in the bodies' order, before sorting; kept between rebuilds so that static
-    // bodies, whose particles never move, are placed once.
-    std::vector<Vec3f> unsortedPositions_;
-    std::vector<Vec3f> unsortedNormals_;
-    std::vector<Vec3f> unsortedVelocities_;
-    std::vector<float> unsortedPsi_;
-    std::vector<std::uint32_t> unsortedBodyOf_;
-    std::size_t placedBodies_ = 0; //!< how many bodies the unsorted arrays were built for
     bool hasDynamicBodies_ = false;
 };
 

@@ -43,24 +43,25 @@ void InteractionPass::densityRates(const InteractionInputs& in, std::vector<floa
 }
 
 float InteractionPass::boundaryDensityRate(std::size_t i, const InteractionInputs& in) const {
-    const BoundaryModel& boundary = in.boundary;
-    if (boundary.size() == 0)
-        return 0.0f;
-    const auto& bx = boundary.positions();
-    const auto& bv = boundary.velocities();
-    const auto& bpsi = boundary.psi();
     const Vec3f xi = in.positions[i];
     const Vec3f vi = in.fluid.velocities[i];
     float rate = 0.0f;
-    boundary.grid().forEachNeighborRange(
-        xi, kernel_.supportRadius(), [&](std::uint32_t begin, std::uint32_t end) {
-            for (std::uint32_t b = begin; b < end; ++b) {
-                const Vec3f d = xi - bx[b];
-                const float r2 = d.squaredNorm();
-                if (r2 < radius2_)
-                    rate += bpsi[b] * (vi - bv[b]).dot(kernel_.gradientFromSquared(d, r2));
-            }
-        });
+    for (const BoundaryLayer* layer : in.boundary.layers()) {
+        if (layer->size() == 0)
+            continue;
+        const auto& bx = layer->positions();
+        const auto& bv = layer->velocities();
+        const auto& bpsi = layer->psi();
+        layer->grid().forEachNeighborRange(
+            xi, kernel_.supportRadius(), [&](std::uint32_t begin, std::uint32_t end) {
+                for (std::uint32_t b = begin; b < end; ++b) {
+                    const Vec3f d = xi - bx[b];
+                    const float r2 = d.squaredNorm();
+                    if (r2 < radius2_)
+                        rate += bpsi[b] * (vi - bv[b]).dot(kernel_.gradientFromSquared(d, r2));
+                }
+            });
+    }
     return rate;
 }
 
@@ -129,37 +130,40 @@ Vec3f InteractionPass::waterForce(std::size_t i, const InteractionInputs& in,
 
 Vec3f InteractionPass::boundaryForce(std::size_t i, const InteractionInputs& in, float pressureTerm,
                                      Contact& contact) const {
-    const BoundaryModel& boundary = in.boundary;
-    if (boundary.size() == 0)
-        return Vec3f::Zero();
-    const auto& bx = boundary.positions();
     const Vec3f xi = in.positions[i];
     const Vec3f vi = in.fluid.velocities[i];
     const float rhoi = in.fluid.densities[i];
     contact.distance2 = constants_.contactRadius * constants_.contactRadius;
     Vec3f force = Vec3f::Zero();
-    boundary.grid().forEachNeighborRange(
-        xi, kernel_.supportRadius(), [&](std::uint32_t begin, std::uint32_t end) {
-            for (std::uint32_t b = begin; b < end; ++b) {
-                const Vec3f d = xi - bx[b];
-                const float r2 = d.squaredNorm();
-                if (r2 >= radius2_)
-                    continue;
-                force += boundaryPairAcceleration(xi, vi, rhoi, pressureTerm, b, d, r2, boundary);
-                if (r2 < contact.distance2) {
-                    contact.distance2 = r2;
-                    contact.boundaryParticle = b;
+    for (const BoundaryLayer* layer : in.boundary.layers()) {
+        if (layer->size() == 0)
+            continue;
+        const auto& bx = layer->positions();
+        layer->grid().forEachNeighborRange(
+            xi, kernel_.supportRadius(), [&](std::uint32_t begin, std::uint32_t end) {
+                for (std::uint32_t b = begin; b < end; ++b) {
+                    const Vec3f d = xi - bx[b];
+                    const float r2 = d.squaredNorm();
+                    if (r2 >= radius2_)
+                        continue;
+                    force +=
+                        boundaryPairAcceleration(xi, vi, rhoi, pressureTerm, b, d, r2, *layer);
+                    if (r2 < contact.distance2) {
+                        contact.distance2 = r2;
+                        contact.layer = layer;
+                        contact.boundaryParticle = b;
+                    }
                 }
-            }
-        });
+            });
+    }
     return force;
 }
 
 Vec3f InteractionPass::boundaryPairAcceleration(const Vec3f& xi, const Vec3f& vi, float rhoi,
                                                 float pressureTerm, std::size_t b, const Vec3f& d,
-                                                float r2, const BoundaryModel& boundary) const {
+                                                float r2, const BoundaryLayer& layer) const {
     const Vec3f grad = kernel_.gradientFromSquared(d, r2);
-    const float approach = (vi - boundary.velocities()[b]).dot(d);
+    const float approach = (vi - layer.velocities()[b]).dot(d);
     float viscosity = 0.0f;
     if (approach < 0.0f)
         viscosity = -constants_.wallViscosity * approach / ((r2 + eta2_) * rhoi);
@@ -168,21 +172,22 @@ Vec3f InteractionPass::boundaryPairAcceleration(const Vec3f& xi, const Vec3f& vi
     // half of it.
     const float pressurei = pressureTerm * rhoi * rhoi;
     const float wallPressure =
-        std::max(0.0f, pressurei + rhoi * constants_.gravity.dot(boundary.positions()[b] - xi));
-    return -boundary.psi()[b] * (pressureTerm + wallPressure / (rhoi * rhoi) + viscosity) * grad;
+        std::max(0.0f, pressurei + rhoi * constants_.gravity.dot(layer.positions()[b] - xi));
+    return -layer.psi()[b] * (pressureTerm + wallPressure / (rhoi * rhoi) + viscosity) * grad;
 }
 
 Vec3f InteractionPass::contactImpulse(const Vec3f& velocity, const Vec3f& acceleration,
                                       const Contact& contact, const BoundaryModel& boundary,
                                       float dt) const {
     const std::size_t b = static_cast<std::size_t>(contact.boundaryParticle);
-    const Vec3f& normal = boundary.normals()[b];
-    const Vec3f predicted = velocity + dt * acceleration - boundary.velocities()[b];
+    const BoundaryLayer& layer = *contact.layer;
+    const Vec3f& normal = layer.normals()[b];
+    const Vec3f predicted = velocity + dt * acceleration - layer.velocities()[b];
     const float normalSpeed = predicted.dot(normal);
     if (normalSpeed >= 0.0f)
         return Vec3f::Zero();
-    const BodyContactTerms& body = boundary.contactTerms(boundary.bodyOf()[b]);
-    const Vec3d x = boundary.positions()[b].cast<double>();
+    const BodyContactTerms& body = boundary.contactTerms(layer.bodyOf()[b]);
+    const Vec3d x = layer.positions()[b].cast<double>();
     const double inverseWaterMass = 1.0 / constants_.mass;
     const auto effectiveMass = [&](const Vec3f& direction) {
         return 1.0 / (inverseWaterMass + body.inverseEffectiveMass(x, direction.cast<double>()));
@@ -204,7 +209,7 @@ void InteractionPass::recordContact(std::size_t i, const Contact& contact, const
                                     const BoundaryModel& boundary, ContactRecords& contacts) const {
     const bool onDynamicBody =
         contact.boundaryParticle >= 0 &&
-        boundary.contactTerms(boundary.bodyOf()[contact.boundaryParticle]).dynamic &&
+        boundary.contactTerms(contact.layer->bodyOf()[contact.boundaryParticle]).dynamic &&
         impulse != Vec3f::Zero();
     contacts.boundaryParticle[i] =
         onDynamicBody ? static_cast<std::int32_t>(contact.boundaryParticle) : -1;
@@ -216,15 +221,16 @@ void InteractionPass::bodyReactions(const InteractionInputs& in,
                                     const ContactRecords& contacts, double dt,
                                     std::vector<Vec3d>& forces) const {
     const BoundaryModel& boundary = in.boundary;
-    forces.assign(boundary.size(), Vec3d::Zero());
+    const BoundaryLayer& layer = boundary.movingLayer();
+    forces.assign(layer.size(), Vec3d::Zero());
     const float inverseStep = static_cast<float>(1.0 / dt);
     // Each boundary particle sums only its own pairs, in the water's sorted order: parallel and
     // deterministic, like the water's passes.
-    tbb::parallel_for(Range(0, boundary.size(), kGrain), [&](const Range& r) {
+    tbb::parallel_for(Range(0, layer.size(), kGrain), [&](const Range& r) {
         for (std::size_t b = r.begin(); b != r.end(); ++b) {
-            if (!boundary.contactTerms(boundary.bodyOf()[b]).dynamic)
+            if (!boundary.contactTerms(layer.bodyOf()[b]).dynamic)
                 continue;
-            const Vec3f xb = boundary.positions()[b];
+            const Vec3f xb = layer.positions()[b];
             Vec3f force = Vec3f::Zero();
             in.grid.forEachNeighborRange(
                 xb, kernel_.supportRadius(), [&](std::uint32_t begin, std::uint32_t end) {
@@ -237,7 +243,7 @@ void InteractionPass::bodyReactions(const InteractionInputs& in,
                         force -= constants_.mass *
                                  boundaryPairAcceleration(xi, in.fluid.velocities[i],
                                                           in.fluid.densities[i], pressureTerms[i],
-                                                          b, d, r2, boundary);
+                                                          b, d, r2, layer);
                         if (contacts.boundaryParticle[i] == static_cast<std::int32_t>(b))
                             force -= inverseStep * contacts.impulse[i];
                     }

@@ -55,7 +55,8 @@ public:
                          std::vector<Vec3f>& accelerations, ContactRecords* contacts) const;
 
     //! The force (N, world) the water exerts on each boundary particle of a dynamic body this
-    //! step, into `forces` (one per sorted boundary particle; zero for other bodies): minus the
+    //! step, into `forces` (one per sorted particle of the moving layer; zero for kinematic
+    //! bodies): minus the
     //! pressure and friction it exerts on its water neighbours, minus the contact impulses it
     //! gave them over Δt. Same inputs as the force pass, after it.
     void bodyReactions(const InteractionInputs& in, const std::vector<float>& pressureTerms,
@@ -64,7 +65,8 @@ public:
 private:
     //! The nearest boundary particle within the contact radius, if any.
     struct Contact {
-        std::int64_t boundaryParticle = -1;
+        const BoundaryLayer* layer = nullptr;
+        std::int64_t boundaryParticle = -1; //!< in `layer`
         float distance2 = 0.0f;
     };
 
@@ -78,13 +80,14 @@ private:
     //! the particle and of the wall plus the wall's artificial viscosity, weighted by Ψ_b.
     Vec3f boundaryPairAcceleration(const Vec3f& xi, const Vec3f& vi, float rhoi, float pressureTerm,
                                    std::size_t b, const Vec3f& d, float r2,
-                                   const BoundaryModel& boundary) const;
+                                   const BoundaryLayer& layer) const;
     //! The contact impulse J (N·s) of eq. 4 for a particle that would still approach the body
     //! after this step: j = −(1 + ε) uₙ / (1/mᵢ + K_B(n, r)) along the normal, plus Coulomb
     //! friction against the tangential slip, bounded by μ j. A static body has K_B = 0.
     Vec3f contactImpulse(const Vec3f& velocity, const Vec3f& acceleration, const Contact& contact,
                          const BoundaryModel& boundary, float dt) const;
-    //! Notes particle i's impulse when it came from a dynamic body (else −1, zero).
+    //! Notes particle i's impulse when it came from a dynamic body (else −1, zero); the index is
+    //! into the moving layer, which holds every dynamic body.
     void recordContact(std::size_t i, const Contact& contact, const Vec3f& impulse,
                        const BoundaryModel& boundary, ContactRecords& contacts) const;
 

@@ -24,12 +24,13 @@ void RigidCoupling::sumReactions(const std::vector<RigidBody>& bodies,
                                  const std::vector<Vec3d>& reactions) {
     forces_.assign(bodies.size(), Vec3d::Zero());
     torques_.assign(bodies.size(), Vec3d::Zero());
-    const auto& bodyOf = boundary.bodyOf();
+    const BoundaryLayer& layer = boundary.movingLayer();
+    const auto& bodyOf = layer.bodyOf();
     for (std::size_t b = 0; b < reactions.size(); ++b) {
         const std::uint32_t body = bodyOf[b];
         if (!bodies[body].isDynamic())
             continue;
-        const Vec3d arm = boundary.positions()[b].cast<double>() - bodies[body].position();
+        const Vec3d arm = layer.positions()[b].cast<double>() - bodies[body].position();
         forces_[body] += reactions[b];
         torques_[body] += arm.cross(reactions[b]);
     }

@@ -23,7 +23,7 @@ public:
     using ExtraForces = std::function<void(std::vector<RigidBody>& bodies, double dt)>;
 
     //! Moves the dynamic bodies of `bodies` over `dt` (s). `reactions` holds the water's force
-    //! on each sorted boundary particle of `boundary` (InteractionPass::bodyReactions).
+    //! on each sorted particle of the boundary's moving layer (InteractionPass::bodyReactions).
     void advance(std::vector<RigidBody>& bodies, const BoundaryModel& boundary,
                  const std::vector<Vec3d>& reactions, double dt,
                  const ExtraForces& extraForces = {});

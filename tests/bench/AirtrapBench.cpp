@@ -2,10 +2,15 @@
 // support radius = 2 × spacing (SPlisHSPlasH's default, so figures compare), on 1 and 2 threads,
 // for a fixed number of steps, the median of --repeat runs. Then the cost of two-way coupling:
 // samples/diving_bunny.json with the bunny plunging into the pool against the same pool without
-// it. Prints particle-updates per second, neighbours per particle, ms per phase and bytes per
-// particle, as a table or (--json) as one JSON array.
+// it. Then the cost of the trapped air bubbles: samples/pouring.json, baked with bubbles until the
+// jet has trapped air, measured from that state with bubbles on and off (the same water, without
+// the bubbles' bodies, pocket searches and rules). Prints particle-updates per second, neighbours
+// per particle, ms per phase and bytes per particle, as a table or (--json) as one JSON array.
 #include "BenchmarkCase.h"
+#include "core/ThreadLimit.h"
 #include "scene/SceneJson.h"
+#include "sim/Simulation.h"
+#include "sph/WcsphSolver.h"
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -46,6 +51,42 @@ Scene divingBunnyWith(const Scene& sample, double particles, bool withBunny) {
     return scene;
 }
 
+//! The pouring sample at about `particles` (its pool's), baked with bubbles for `seconds` of
+//! simulated time on all threads: the state the bubble cases start from.
+std::pair<Scene, SimulationState> pouringAfter(const Scene& sample, double particles,
+                                               double seconds) {
+    Scene scene = damBreakWith(sample, particles);
+    scene.bubbles.enabled = true;
+    // The jet's layers and budget scale with the spacing: keep the poured volume.
+    const double scale = std::pow(sample.solver.particleSpacing / scene.solver.particleSpacing, 3);
+    for (InflowEmitterSettings& emitter : scene.emitters)
+        emitter.maxParticles = int(std::lround(emitter.maxParticles * scale));
+    ThreadLimit all(0);
+    Simulation simulation(scene);
+    while (simulation.state().time < seconds)
+        simulation.step(1.0e9);
+    return {scene, simulation.state()};
+}
+
+//! The same water without bubbles: the baseline the overhead is measured against.
+std::pair<Scene, SimulationState> withoutBubbles(std::pair<Scene, SimulationState> run) {
+    run.first.bubbles.enabled = false;
+    run.second.bubbles.clear();
+    return run;
+}
+
+void printBubbleOverhead(const BenchmarkResult& off, const BenchmarkResult& on) {
+    const auto perStep = [](const BenchmarkResult& r) { return 1000.0 * r.wallSeconds / r.steps; };
+    const auto phase = [&](const char* name) { return on.phaseMilliseconds.at(name); };
+    std::printf("  bubbles (%zu alive, %d thr): %.3f vs %.3f ms/step, overhead %+.2f %%; per step "
+                "pockets %.4f ms, forces %.4f ms, deletion %.4f ms, bodies %.4f vs %.4f ms\n",
+                on.bubbles, on.threads, perStep(on), perStep(off),
+                100.0 * (perStep(on) / perStep(off) - 1.0), phase("bubble_pockets"),
+                phase("bubble_forces"), phase("bubble_deletion"), phase("bodies"),
+                off.phaseMilliseconds.at("bodies"));
+    std::fflush(stdout);
+}
+
 //! Shared machines are noisy: the median of several runs is the figure that repeats.
 BenchmarkResult medianRun(const BenchmarkCase& benchmark, int threads, int steps, int warmup,
                           int repeat) {
@@ -71,6 +112,7 @@ nlohmann::json toJson(const BenchmarkResult& r) {
             {"bytes_per_particle", r.bytesPerParticle},
             {"engine_bytes_per_particle", r.engineBytesPerParticle},
             {"ms_per_step", 1000.0 * r.wallSeconds / r.steps},
+            {"bubbles", r.bubbles},
             {"phase_ms", phases}};
 }
 
@@ -99,6 +141,9 @@ int main(int argc, char** argv) {
     std::vector<int> threads = {1, 2};
     std::string couplingPath = std::string(AIRTRAP_SOURCE_DIR) + "/samples/diving_bunny.json";
     std::vector<double> couplingSizes = {50000};
+    std::string bubblePath = std::string(AIRTRAP_SOURCE_DIR) + "/samples/pouring.json";
+    std::vector<double> bubbleSizes = {50000};
+    double bubbleWarmup = 1.2;
     int steps = 50;
     int warmup = 5;
     int repeat = 3;
@@ -114,6 +159,12 @@ int main(int argc, char** argv) {
     app.add_option("--coupling-particles", couplingSizes,
                    "Particle counts of the coupling cases (empty: none)")
         ->delimiter(',');
+    app.add_option("--bubble-scene", bubblePath, "Scene with bubbles, for their overhead");
+    app.add_option("--bubble-particles", bubbleSizes,
+                   "Pool particle counts of the bubble cases (empty: none)")
+        ->delimiter(',');
+    app.add_option("--bubble-warmup", bubbleWarmup,
+                   "Simulated seconds baked before the bubble cases are measured");
     app.add_flag("--json", json, "Print one JSON array instead of a table");
     CLI11_PARSE(app, argc, argv);
 
@@ -123,6 +174,13 @@ int main(int argc, char** argv) {
         const auto thousands = [](double size) {
             return std::to_string(int(std::lround(size / 1000))) + "k";
         };
+        // An empty option ("--particles ''") reads as one 0: no case.
+        const auto wanted = [](std::vector<double>& list) {
+            std::erase_if(list, [](double size) { return !(size > 0.0); });
+        };
+        wanted(sizes);
+        wanted(couplingSizes);
+        wanted(bubbleSizes);
         for (double size : sizes)
             cases.emplace_back("dam_break_" + thousands(size), damBreakWith(sample, size));
         if (!couplingSizes.empty()) {
@@ -133,16 +191,37 @@ int main(int argc, char** argv) {
                                    divingBunnyWith(bunny, size, true));
             }
         }
+        std::vector<std::pair<BenchmarkCase, BenchmarkCase>> bubbleCases;
+        if (!bubbleSizes.empty()) {
+            const Scene pouring = readSceneFile(bubblePath);
+            for (double size : bubbleSizes) {
+                auto on = pouringAfter(pouring, size, bubbleWarmup);
+                auto off = withoutBubbles(on);
+                bubbleCases.emplace_back(
+                    BenchmarkCase("pouring_" + thousands(size) + "_off", off.first, off.second),
+                    BenchmarkCase("pouring_" + thousands(size) + "_on", on.first, on.second));
+            }
+        }
         nlohmann::json all = nlohmann::json::array();
         if (!json)
             printTableHeader();
+        const auto measure = [&](const BenchmarkCase& benchmark, int t) {
+            const BenchmarkResult result = medianRun(benchmark, t, steps, warmup, repeat);
+            if (json)
+                all.push_back(toJson(result));
+            else
+                printTableRow(result);
+            return result;
+        };
         for (const BenchmarkCase& benchmark : cases)
+            for (int t : threads)
+                measure(benchmark, t);
+        for (const auto& [off, on] : bubbleCases)
             for (int t : threads) {
-                const BenchmarkResult result = medianRun(benchmark, t, steps, warmup, repeat);
-                if (json)
-                    all.push_back(toJson(result));
-                else
-                    printTableRow(result);
+                const BenchmarkResult without = measure(off, t);
+                const BenchmarkResult with = measure(on, t);
+                if (!json)
+                    printBubbleOverhead(without, with);
             }
         if (json)
             std::cout << all.dump(2) << "\n";

@@ -35,7 +35,7 @@ BenchmarkResult BenchmarkCase::run(int threads, int steps, int warmupSteps) cons
     ProcessMemory::resetPeak();
     const std::size_t baseline = ProcessMemory::residentBytes();
 
-    Simulation simulation(scene_);
+    Simulation simulation = start_ ? Simulation(scene_, *start_) : Simulation(scene_);
     WcsphSolver& solver = simulation.solver();
     const double noFrameLimit = 1.0e9;
     for (int s = 0; s < warmupSteps; ++s)
@@ -55,6 +55,7 @@ BenchmarkResult BenchmarkCase::run(int threads, int steps, int warmupSteps) cons
     result.threads = limit.threads();
     result.steps = steps;
     result.wallSeconds = wall;
+    result.bubbles = simulation.state().bubbles.size();
     result.particleUpdatesPerSecond = double(result.particles) * steps / wall;
     result.neighborsPerParticle = meanNeighbors(solver, fluid);
     const double n = double(std::max<std::size_t>(1, result.particles));

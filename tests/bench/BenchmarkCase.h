@@ -1,7 +1,9 @@
 #pragma once
 #include "scene/Scene.h"
+#include "sim/SimulationState.h"
 
 #include <map>
+#include <optional>
 #include <string>
 
 namespace airtrap::bench {
@@ -18,12 +20,16 @@ struct BenchmarkResult {
     double bytesPerParticle = 0.0;       //!< peak resident growth over the run / particles
     double engineBytesPerParticle = 0.0; //!< bytes the engine's arrays hold / particles
     std::map<std::string, double> phaseMilliseconds; //!< mean per step
+    std::size_t bubbles = 0;                         //!< alive at the end of the run
 };
 
 class BenchmarkCase {
 public:
     BenchmarkCase(std::string name, Scene scene)
         : name_(std::move(name)), scene_(std::move(scene)) {}
+    //! Starts from `start` (a state of `scene`) rather than from the scene's t = 0.
+    BenchmarkCase(std::string name, Scene scene, SimulationState start)
+        : name_(std::move(name)), scene_(std::move(scene)), start_(std::move(start)) {}
 
     //! Builds the simulation, takes `warmupSteps` unmeasured steps, then `steps` measured ones.
     BenchmarkResult run(int threads, int steps, int warmupSteps) const;
@@ -31,6 +37,7 @@ public:
 private:
     std::string name_;
     Scene scene_;
+    std::optional<SimulationState> start_;
 };
 
 } // namespace airtrap::bench

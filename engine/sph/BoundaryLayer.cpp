@@ -1,0 +1,64 @@
+#include "sph/BoundaryLayer.h"
+
+namespace airtrap {
+
+BoundaryLayer::BoundaryLayer(const Aabb& gridDomain, float cellSize, float restDensity)
+    : restDensity_(restDensity), grid_(gridDomain, cellSize) {}
+
+void BoundaryLayer::rebuild(const std::vector<RigidBody>& bodies,
+                            const std::vector<std::uint32_t>& members) {
+    std::size_t total = 0;
+    for (std::uint32_t index : members)
+        total += bodies[index].boundary().size();
+    unsortedPositions_.resize(total);
+    unsortedNormals_.resize(total);
+    unsortedVelocities_.resize(total);
+    unsortedPsi_.resize(total);
+    unsortedBodyOf_.resize(total);
+    std::size_t first = 0;
+    for (std::uint32_t index : members) {
+        placeBody(bodies[index], index, first);
+        first += bodies[index].boundary().size();
+    }
+    grid_.build(unsortedPositions_);
+    const auto& order = grid_.order();
+    const std::size_t n = order.size();
+    positions_.resize(n);
+    normals_.resize(n);
+    velocities_.resize(n);
+    psi_.resize(n);
+    bodyOf_.resize(n);
+    for (std::size_t s = 0; s < n; ++s) {
+        const std::uint32_t from = order[s];
+        positions_[s] = unsortedPositions_[from];
+        normals_[s] = unsortedNormals_[from];
+        velocities_[s] = unsortedVelocities_[from];
+        psi_[s] = unsortedPsi_[from];
+        bodyOf_[s] = unsortedBodyOf_[from];
+    }
+}
+
+void BoundaryLayer::placeBody(const RigidBody& body, std::uint32_t index, std::size_t first) {
+    const BoundaryParticles& local = body.boundary();
+    for (std::size_t b = 0; b < local.size(); ++b) {
+        const Vec3f x = body.toWorld(local.positions[b]);
+        unsortedPositions_[first + b] = x;
+        unsortedNormals_[first + b] = body.directionToWorld(local.normals[b]);
+        unsortedVelocities_[first + b] = body.velocityAt(x);
+        unsortedPsi_[first + b] = restDensity_ * local.volumes[b];
+        unsortedBodyOf_[first + b] = index;
+    }
+}
+
+std::size_t BoundaryLayer::allocatedBytes() const {
+    return grid_.allocatedBytes() +
+           (positions_.capacity() + normals_.capacity() + velocities_.capacity()) * sizeof(Vec3f) +
+           psi_.capacity() * sizeof(float) + bodyOf_.capacity() * sizeof(std::uint32_t) +
+           (unsortedPositions_.capacity() + unsortedNormals_.capacity() +
+            unsortedVelocities_.capacity()) *
+               sizeof(Vec3f) +
+           unsortedPsi_.capacity() * sizeof(float) +
+           unsortedBodyOf_.capacity() * sizeof(std::uint32_t);
+}
+
+} // namespace airtrap

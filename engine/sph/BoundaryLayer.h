@@ -1,0 +1,51 @@
+#pragma once
+// The boundary particles of a group of rigid bodies in world space, sorted on their own
+// neighbour grid (same cell layout as the water's). Each carries Ψ_b = ρ₀ V_b, the mass it stands
+// in for in the water's density rate and pressure force (Akinci et al. 2012), its normal for the
+// contact impulse (paper eq. 4), its velocity and the index of its body.
+#include "rigid/RigidBody.h"
+#include "sph/NeighborGrid.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace airtrap {
+
+class BoundaryLayer {
+public:
+    BoundaryLayer(const Aabb& gridDomain, float cellSize, float restDensity);
+
+    //! Gathers the boundary particles of bodies[members[…]] at their current poses and sorts
+    //! them.
+    void rebuild(const std::vector<RigidBody>& bodies, const std::vector<std::uint32_t>& members);
+
+    std::size_t size() const { return positions_.size(); }
+    const NeighborGrid& grid() const { return grid_; }
+    const std::vector<Vec3f>& positions() const { return positions_; }
+    const std::vector<Vec3f>& normals() const { return normals_; }
+    const std::vector<Vec3f>& velocities() const { return velocities_; }
+    const std::vector<float>& psi() const { return psi_; }
+    //! Index into the bodies of rebuild() of each sorted particle's body.
+    const std::vector<std::uint32_t>& bodyOf() const { return bodyOf_; }
+    std::size_t allocatedBytes() const;
+
+private:
+    //! Writes the world-space data of `body`'s particles into the unsorted arrays from `first`.
+    void placeBody(const RigidBody& body, std::uint32_t index, std::size_t first);
+
+    float restDensity_;
+    NeighborGrid grid_;
+    std::vector<Vec3f> positions_;
+    std::vector<Vec3f> normals_;
+    std::vector<Vec3f> velocities_;
+    std::vector<float> psi_;
+    std::vector<std::uint32_t> bodyOf_;
+    // The same in the bodies' order, before sorting.
+    std::vector<Vec3f> unsortedPositions_;
+    std::vector<Vec3f> unsortedNormals_;
+    std::vector<Vec3f> unsortedVelocities_;
+    std::vector<float> unsortedPsi_;
+    std::vector<std::uint32_t> unsortedBodyOf_;
+};
+
+} // namespace airtrap

@@ -1,0 +1,141 @@
+// The deletion rules of paper §3.4, each in a scene made for it, each counted under its own rule
+// in the frame statistics and the running totals:
+//  1. age: a bubble deep in still water outlives bubbles.max_age;
+//  2. floating: a bubble rises to the surface and floats there longer than max_floating_time;
+//  3. overlap: of two bubbles overlapping by more than max_overlap, the smaller goes;
+//  4. impact: a floating bubble is hit by a falling block of water faster than impact_speed.
+#include "BubbleTestSupport.h"
+#include "core/Interrupter.h"
+#include "sph/WcsphSolver.h"
+
+#include <QtTest>
+
+using namespace airtrap;
+
+namespace {
+
+Scene stillTank(double depth) {
+    Scene scene;
+    scene.solver.particleSpacing = 0.02;
+    scene.solver.maxSpeed = 3.0;
+    scene.container.max = Vec3d(0.4, 0.6, 0.4);
+    scene.container.headroom = 0.2;
+    FluidBlock block;
+    block.max = Vec3d(0.4, depth, 0.4);
+    scene.fluidBlocks.push_back(block);
+    scene.frames.fps = 50.0;
+    scene.bubbles.enabled = true;
+    scene.bubbles.maxNewPerFrame = 0;
+    scene.bubbles.maxAge = 1000.0;
+    scene.bubbles.maxFloatingTime = 1000.0;
+    scene.bubbles.maxOverlap = 1.0;
+    scene.bubbles.impactSpeed = 100.0;
+    return scene;
+}
+
+//! Advances whole frames until `done` or `until` seconds; returns the time of the frame where
+//! `done` first held (or −1).
+template <class Done>
+double runUntil(Simulation& simulation, double until, Done&& done) {
+    Interrupter never;
+    while (simulation.state().time < until) {
+        simulation.advanceFrame(never);
+        if (done(simulation))
+            return simulation.state().time;
+    }
+    return -1.0;
+}
+
+std::uint64_t deletedBy(const Simulation& simulation, BubbleTally::Rule rule) {
+    return simulation.state().bubblesDeleted.deleted[rule];
+}
+
+} // namespace
+
+class TestBubbleDeletion : public QObject {
+    Q_OBJECT
+
+private Q_SLOTS:
+    void ageRule() {
+        Scene scene = stillTank(0.5);
+        scene.bubbles.maxAge = 0.1;
+        auto simulation =
+            test::simulationWithBubbles(scene, {test::bubbleAt(0, Vec3d(0.2, 0.15, 0.2), 0.04)});
+        const double at = runUntil(*simulation, 0.5, [](const Simulation& s) {
+            return s.state().bubbles.empty();
+        });
+        QVERIFY2(at > 0.1 && at <= 0.1 + 1.0 / 50.0 + 1e-9, qPrintable(QString::number(at)));
+        QCOMPARE(deletedBy(*simulation, BubbleTally::Age), std::uint64_t(1));
+        QCOMPARE(simulation->state().bubblesDeleted.deletedTotal(), std::uint64_t(1));
+        QCOMPARE(simulation->lastFrameStats().bubbles.deleted[BubbleTally::Age], std::uint64_t(1));
+    }
+
+    void floatingRule() {
+        Scene scene = stillTank(0.3);
+        scene.bubbles.maxFloatingTime = 0.2;
+        auto simulation =
+            test::simulationWithBubbles(scene, {test::bubbleAt(0, Vec3d(0.2, 0.18, 0.2), 0.04)});
+        double surfacedAt = -1.0;
+        const double at = runUntil(*simulation, 1.5, [&](Simulation& s) {
+            if (surfacedAt < 0.0 && !s.solver().bubbleSurroundings().empty() &&
+                s.solver().bubbleSurroundings()[0].floating)
+                surfacedAt = s.state().time;
+            return s.state().bubbles.empty();
+        });
+        qInfo("surfaced at %.3f s, deleted at %.3f s", surfacedAt, at);
+        QVERIFY2(surfacedAt > 0.0, "the bubble never reached the surface");
+        QVERIFY2(at >= surfacedAt + 0.2 - 0.02 - 1e-9, "deleted before it floated long enough");
+        QCOMPARE(deletedBy(*simulation, BubbleTally::Floating), std::uint64_t(1));
+        QCOMPARE(simulation->state().bubblesDeleted.deletedTotal(), std::uint64_t(1));
+    }
+
+    void overlapRule() {
+        Scene scene = stillTank(0.5);
+        scene.bubbles.maxOverlap = 0.5;
+        scene.bubbles.approachRestitution = -1.0;
+        scene.bubbles.overlapRestitution = -1.0;
+        const double small = 0.04;
+        const double large = 0.05;
+        // Overlap 0.6 of the smaller diameter: deleted. 0.3 of it: kept.
+        const auto pairAt = [&](double overlap) {
+            const double distance = small + large - overlap * 2.0 * small;
+            return test::simulationWithBubbles(
+                scene, {test::bubbleAt(0, Vec3d(0.2 - 0.5 * distance, 0.25, 0.2), small),
+                        test::bubbleAt(1, Vec3d(0.2 + 0.5 * distance, 0.25, 0.2), large)});
+        };
+        auto deep = pairAt(0.6);
+        deep->step(1.0);
+        QCOMPARE(deep->state().bubbles.size(), std::size_t(1));
+        QCOMPARE(deep->state().bubbles[0].id, 1u); // the larger stays
+        QCOMPARE(deletedBy(*deep, BubbleTally::Overlap), std::uint64_t(1));
+        auto shallow = pairAt(0.3);
+        shallow->step(1.0);
+        QCOMPARE(shallow->state().bubbles.size(), std::size_t(2));
+    }
+
+    void impactRule() {
+        Scene scene = stillTank(0.3);
+        scene.bubbles.impactSpeed = 1.5;
+        scene.bubbles.riseTime = 0.05;
+        // A bubble floating at the surface, and a block of water falling onto it from 0.25 m
+        // above (2.2 m/s on arrival) — or, for comparison, not.
+        const BubbleState floating = test::bubbleAt(0, Vec3d(0.2, 0.3, 0.2), 0.04);
+        auto calm = test::simulationWithBubbles(scene, {floating});
+        FluidBlock falling;
+        falling.name = "Falling";
+        falling.min = Vec3d(0.12, 0.55, 0.12);
+        falling.max = Vec3d(0.28, 0.65, 0.28);
+        scene.fluidBlocks.push_back(falling);
+        auto hit = test::simulationWithBubbles(scene, {floating});
+        const auto gone = [](const Simulation& s) { return s.state().bubbles.empty(); };
+        const double at = runUntil(*hit, 0.5, gone);
+        qInfo("hit bubble deleted at %.3f s", at);
+        QVERIFY2(at > 0.15, "deleted before the water arrived");
+        QCOMPARE(deletedBy(*hit, BubbleTally::Impact), std::uint64_t(1));
+        QCOMPARE(runUntil(*calm, 0.5, gone), -1.0);
+        QCOMPARE(calm->state().bubblesDeleted.deletedTotal(), std::uint64_t(0));
+    }
+};
+
+QTEST_APPLESS_MAIN(TestBubbleDeletion)
+#include "TestBubbleDeletion.moc"
