@@ -5,12 +5,16 @@
 #include "sim/Simulation.h"
 #include "viewport/BodyDrawable.h"
 #include "viewport/BoxGizmoDrawable.h"
+#include "viewport/BubbleDrawable.h"
+#include "viewport/SpeedColormap.h"
 #include "viewport/SpeedLegend.h"
 #include "viewport/ViewportWidget.h"
 
+#include <QLineF>
 #include <QSignalSpy>
 #include <QTest>
 #include <QWheelEvent>
+#include <cmath>
 
 namespace airtrap {
 
@@ -81,6 +85,12 @@ bool isSelectedBody(const QColor& colour) {
     return isShadedAs(colour, BoxGizmoDrawable::highlightColour());
 }
 
+//! Bubbles are light at any shading (their darkest side keeps 60 % of the colour): a dark pixel
+//! of similar hue, where water and grid lines blend, is not one.
+bool isBubble(const QColor& colour) {
+    return colour.red() >= 100 && isShadedAs(colour, BubbleDrawable::colour());
+}
+
 QVector3D toQt(const Vec3d& v) {
     return QVector3D(float(v.x()), float(v.y()), float(v.z()));
 }
@@ -106,6 +116,28 @@ int countWater(const QImage& image) {
         }
     }
     return count;
+}
+
+//! Pixels (x, y) of `image` that pass `test`: how many lie within `radius` of `centre` (both in
+//! image pixels), and how many outside.
+struct PixelSplit {
+    int inside = 0;
+    int outside = 0;
+};
+
+template <typename Test>
+PixelSplit splitAround(const QImage& image, const QPointF& centre, double radius, Test test) {
+    PixelSplit pixels;
+    for (int y = 0; y < image.height(); ++y) {
+        for (int x = 0; x < image.width(); ++x) {
+            if (!test(x, y))
+                continue;
+            const QPointF offset = QPointF(x + 0.5, y + 0.5) - centre;
+            const bool within = std::hypot(offset.x(), offset.y()) <= radius;
+            (within ? pixels.inside : pixels.outside) += 1;
+        }
+    }
+    return pixels;
 }
 
 QString describe(const QColor& colour) {
@@ -170,6 +202,70 @@ private Q_SLOTS:
         // The column's front face alone is 0.5 × 1 m: a few percent of this view.
         const double share = double(countWater(image)) / double(image.width() * image.height());
         QVERIFY2(share > 0.015 && share < 0.2, qPrintable(QString::number(share)));
+    }
+
+    void playbackDrawsABubbleAsASphereOfItsRadius() {
+        const auto viewport = shownViewport();
+        QVERIFY(viewport);
+        const Scene scene = damBreak();
+        viewport->setScene(scene);
+        FrameData frame = *initialFrame(scene);
+        viewport->setFrame(std::make_shared<const FrameData>(frame));
+        QCOMPARE(viewport->bubbleCount(), 0);
+        const QImage without = viewport->grabFramebuffer();
+
+        BubbleState bubble;
+        bubble.radius = 0.2;
+        bubble.body.position = Vec3d(1.6, 0.6, 0.2); // in the empty part of the tank
+        frame.state.bubbles.push_back(bubble);
+        viewport->setFrame(std::make_shared<const FrameData>(frame));
+        QCOMPARE(viewport->bubbleCount(), 1);
+        const QImage image = viewport->grabFramebuffer();
+        QCOMPARE(image.size(), without.size());
+        const qreal ratio = viewport->devicePixelRatio();
+
+        // The sphere's outline on screen: its radius seen across the view direction.
+        const QMatrix4x4 view = viewport->camera().viewMatrix();
+        const QVector3D across(view(0, 0), view(0, 1), view(0, 2)); // the camera's right
+        const QVector3D centre = toQt(bubble.body.position);
+        const QPointF centrePixel = project(*viewport, centre);
+        const double radiusPixels =
+            QLineF(centrePixel, project(*viewport, centre + float(bubble.radius) * across))
+                .length() *
+            ratio;
+        QVERIFY2(radiusPixels > 15.0, qPrintable(QString::number(radiusPixels)));
+        const QColor middle = image.pixelColor((centrePixel * ratio).toPoint());
+        QVERIFY2(isBubble(middle), qPrintable(describe(middle)));
+        QCOMPARE(countAround(image, centrePixel, 3, ratio, isBubble), 49);
+        QCOMPARE(countAround(without, centrePixel, 3, ratio, isBubble), 0);
+
+        // Shaded, the disc is bubble-coloured but for its whitened rim and highlight; outside it
+        // the bubble changes nothing (perspective widens the outline a little: hence the margin).
+        const QPointF centreInImage = centrePixel * ratio;
+        const double outline = 1.1 * radiusPixels + 2.0;
+        const PixelSplit coloured = splitAround(image, centreInImage, outline, [&](int x, int y) {
+            return isBubble(image.pixelColor(x, y));
+        });
+        const double disc = 3.14159 * radiusPixels * radiusPixels;
+        QVERIFY2(coloured.inside > 0.6 * disc,
+                 qPrintable(QStringLiteral("%1 of %2").arg(coloured.inside).arg(disc)));
+        const PixelSplit changed = splitAround(image, centreInImage, outline, [&](int x, int y) {
+            return image.pixel(x, y) != without.pixel(x, y);
+        });
+        QVERIFY(changed.inside >= coloured.inside);
+        QCOMPARE(changed.outside, 0);
+    }
+
+    void bubblesHaveAColourOfTheirOwn() {
+        // At any shading no speed of the water and no body motion looks like a bubble.
+        for (int step = 0; step <= 100; ++step) {
+            const QColor water = SpeedColormap::colourAt(float(step) / 100.0f);
+            QVERIFY2(!isBubble(water), qPrintable(describe(water)));
+        }
+        for (const char* motion : {"static", "dynamic", "kinematic"})
+            QVERIFY2(!isBubble(BodyDrawable::colourOf(motion)), motion);
+        QVERIFY(!isBubble(BoxGizmoDrawable::highlightColour()));
+        QVERIFY(!isBubble(ViewportWidget::clearColor()));
     }
 
     void playbackShowsTheSpeedLegend() {

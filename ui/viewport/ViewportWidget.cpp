@@ -91,6 +91,7 @@ void ViewportWidget::setSelection(const SceneItem& item) {
 void ViewportWidget::setFrame(std::shared_ptr<const FrameData> frame) {
     frame_ = std::move(frame);
     particles_.setFrame(frame_);
+    bubbleDrawable_.setBubbles(frame_ ? frame_->state.bubbles : std::vector<BubbleState>());
     boxes_.setFluidBlocksVisible(!frame_);
     placeBodies();
     update();
@@ -168,8 +169,8 @@ float ViewportWidget::aspectRatio() const {
 
 // --- OpenGL --------------------------------------------------------------------------------------
 
-std::array<Drawable*, 5> ViewportWidget::drawables() {
-    return {&particles_, &bodyDrawable_, &grid_, &axes_, &boxes_};
+std::array<Drawable*, 6> ViewportWidget::drawables() {
+    return {&particles_, &bubbleDrawable_, &bodyDrawable_, &grid_, &axes_, &boxes_};
 }
 
 void ViewportWidget::initializeGL() {
@@ -229,6 +230,7 @@ void ViewportWidget::drawScene() {
     context.gl.glEnable(GL_DEPTH_TEST);
     context.gl.glDepthFunc(GL_LEQUAL); // lines on box faces and the floor win ties
     particles_.draw(context);
+    bubbleDrawable_.draw(context);
     if (hasScene_) {
         bodyDrawable_.draw(context);
     }

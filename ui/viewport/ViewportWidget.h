@@ -12,6 +12,7 @@
 #include "viewport/BodyDrawable.h"
 #include "viewport/BodyMeshCache.h"
 #include "viewport/BoxGizmoDrawable.h"
+#include "viewport/BubbleDrawable.h"
 #include "viewport/DragTracker.h"
 #include "viewport/GridDrawable.h"
 #include "viewport/OrbitCamera.h"
@@ -59,6 +60,8 @@ public:
     float particleRadius() const;
     //! The speed drawn white, m/s: the fixed scale, or the shown frame's fastest particle.
     float speedScale() const { return particles_.effectiveSpeedScale(); }
+    //! Bubbles of the shown frame that the view draws.
+    int bubbleCount() const { return bubbleDrawable_.bubbleCount(); }
     //! The scene's bodies where the view shows them now (scene or frame poses).
     const SceneBodies& bodies() const { return bodies_; }
     //! The gizmo or body under `position` (widget pixels), as a click there would pick it.
@@ -69,8 +72,8 @@ public Q_SLOTS:
     void setScene(const airtrap::Scene& scene);
     //! Highlights this item's gizmo (none: nothing).
     void setSelection(const airtrap::SceneItem& item);
-    //! Playback: draws the frame's particles instead of the fluid blocks, and the bodies where the
-    //! frame has them; null returns to editing.
+    //! Playback: draws the frame's particles instead of the fluid blocks, its bubbles, and the
+    //! bodies where the frame has them; null returns to editing.
     void setFrame(std::shared_ptr<const airtrap::FrameData> frame);
     //! Aims the camera at the simulation domain (container plus headroom) and fits it in view.
     void frameAll();
@@ -102,8 +105,9 @@ protected:
     void keyPressEvent(QKeyEvent* event) override;
 
 private:
-    //! Everything drawn in 3D, in drawing order: opaque water and bodies first, lines over them.
-    std::array<Drawable*, 5> drawables();
+    //! Everything drawn in 3D, in drawing order: opaque water, bubbles and bodies first, lines
+    //! over them.
+    std::array<Drawable*, 6> drawables();
     //! Puts the bodies where the shown frame has them (or at their scene poses) for drawing.
     void placeBodies();
     //! Frees every GL object while the context is current (before it goes away).
@@ -122,6 +126,7 @@ private:
     BoxGizmoDrawable boxes_;
     BodyDrawable bodyDrawable_;
     ParticleDrawable particles_;
+    BubbleDrawable bubbleDrawable_;
     SpeedLegend legend_;
 
     SceneGizmos gizmos_;
