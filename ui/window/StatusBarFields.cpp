@@ -2,10 +2,12 @@
 
 #include "cache/FrameFile.h"
 #include "sim/Baker.h"
+#include "sim/SimulationState.h"
 
 #include <QLabel>
 #include <QLocale>
 #include <QStatusBar>
+#include <QStringList>
 #include <cmath>
 
 namespace airtrap {
@@ -14,6 +16,10 @@ StatusBarFields::StatusBarFields(QStatusBar* statusBar) : QObject(statusBar) {
     frame_ = addField(statusBar, "frameField", tr("Frame shown in the viewport"));
     time_ = addField(statusBar, "timeField", tr("Simulated time of that frame"));
     particles_ = addField(statusBar, "particlesField", tr("Water particles in that frame"));
+    bubbles_ = addField(statusBar, "bubblesField",
+                        tr("Trapped air bubbles: alive in that frame, created and deleted up to "
+                           "it, with the deletions per rule"));
+    bubbles_->hide();
     step_ = addField(statusBar, "stepField", tr("Wall time per simulation step of the bake"));
     eta_ = addField(statusBar, "etaField", tr("Estimated time until the bake finishes"));
 }
@@ -33,12 +39,39 @@ void StatusBarFields::showFrame(int frame, const FrameData& data) {
     time_->setText(tr("t = %1 s").arg(data.state.time, 0, 'f', 3));
     particles_->setText(
         tr("%1 particles").arg(QLocale().toString(qulonglong(data.state.fluid.size()))));
+    showBubbles(bubbleSummary(data.state));
 }
 
 void StatusBarFields::showFrameNumber(int frame, double fps) {
     frame_->setText(tr("Frame %1").arg(frame));
     time_->setText(tr("t = %1 s").arg((frame - 1) / fps, 0, 'f', 3));
     particles_->clear();
+    showBubbles(QString());
+}
+
+void StatusBarFields::showBubbles(const QString& summary) {
+    // Hidden rather than "0 bubbles": most scenes have none, and the bar has little room.
+    bubbles_->setText(summary);
+    bubbles_->setVisible(!summary.isEmpty());
+}
+
+QString StatusBarFields::bubbleSummary(const SimulationState& state) {
+    const BubbleTally& deleted = state.bubblesDeleted;
+    if (state.nextBubbleId == 0 && deleted.deletedTotal() == 0)
+        return QString();
+    const QLocale locale;
+    QStringList perRule;
+    for (int rule = 0; rule < BubbleTally::RuleCount; ++rule) {
+        const std::string_view name = BubbleTally::kRuleNames[rule];
+        perRule << QStringLiteral("%1 %2").arg(
+            QString::fromUtf8(name.data(), qsizetype(name.size())),
+            locale.toString(qulonglong(deleted.deleted[rule])));
+    }
+    return tr("Bubbles %1 · created %2 · deleted %3 (%4)")
+        .arg(locale.toString(qulonglong(state.bubbles.size())),
+             locale.toString(qulonglong(state.nextBubbleId)),
+             locale.toString(qulonglong(deleted.deletedTotal())),
+             perRule.join(QStringLiteral(", ")));
 }
 
 void StatusBarFields::showBakeProgress(const BakeProgress& progress) {

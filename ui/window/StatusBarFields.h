@@ -1,7 +1,8 @@
 #pragma once
-// The permanent fields of the status bar: frame, simulated time, particles, step time and the
-// bake's ETA. Transient messages still use QStatusBar::showMessage on the left.
+// The permanent fields of the status bar: frame, simulated time, particles, bubbles, step time
+// and the bake's ETA. Transient messages still use QStatusBar::showMessage on the left.
 #include <QObject>
+#include <QString>
 
 class QLabel;
 class QStatusBar;
@@ -10,6 +11,7 @@ namespace airtrap {
 
 struct BakeProgress;
 struct FrameData;
+struct SimulationState;
 
 class StatusBarFields : public QObject {
     Q_OBJECT
@@ -18,7 +20,8 @@ public:
     //! Adds the fields to `statusBar` (which owns them).
     explicit StatusBarFields(QStatusBar* statusBar);
 
-    //! The frame shown in the viewport: its number, time and particle count.
+    //! The frame shown in the viewport: its number, time, particle count and bubble counts (the
+    //! bubble field is hidden while the frame's scene has never had a bubble).
     void showFrame(int frame, const FrameData& data);
     //! Edit mode: the frame field shows the timeline position only.
     void showFrameNumber(int frame, double fps);
@@ -27,19 +30,27 @@ public:
     //! No bake running: the step and ETA fields are cleared.
     void clearBake();
 
+    //! "Bubbles 12 · created 30 · deleted 18 (age 2, floating 10, overlap 5, impact 1)": alive at
+    //! the frame's end, then created and deleted (per rule) since frame 1. Empty when no bubble
+    //! has been created or deleted yet.
+    static QString bubbleSummary(const SimulationState& state);
+
     QLabel* frameField() const { return frame_; }
     QLabel* timeField() const { return time_; }
     QLabel* particlesField() const { return particles_; }
+    QLabel* bubblesField() const { return bubbles_; }
     QLabel* stepField() const { return step_; }
     QLabel* etaField() const { return eta_; }
 
 private:
     QLabel* addField(QStatusBar* statusBar, const char* objectName, const QString& toolTip);
+    void showBubbles(const QString& summary);
     static QString duration(double seconds);
 
     QLabel* frame_;
     QLabel* time_;
     QLabel* particles_;
+    QLabel* bubbles_;
     QLabel* step_;
     QLabel* eta_;
 };
