@@ -156,6 +156,28 @@ private Q_SLOTS:
         QCOMPARE(std::get<bool>(edits.front()), false);
     }
 
+    void bubblesSectionSwitchesOnAsOneUndoStep() {
+        panel_->showItem(SceneItem::sectionItem("bubbles"));
+        QCOMPARE(panel_->findChild<QLabel*>(QStringLiteral("title"))->text(),
+                 QStringLiteral("Bubbles"));
+        auto* enabled = qobject_cast<BoolEditor*>(editor("enabled"));
+        QVERIFY(enabled);
+        QVERIFY(!scene().bubbles.enabled);
+        auto* box = enabled->findChild<QCheckBox*>();
+        QVERIFY(box);
+        QVERIFY(!box->isChecked());
+
+        box->click();
+        QVERIFY(scene().bubbles.enabled);
+        QCOMPARE(undoStack()->count(), 1);
+        undoStack()->undo();
+        QVERIFY(!scene().bubbles.enabled);
+        QVERIFY(!box->isChecked());
+        undoStack()->redo();
+        QVERIFY(scene().bubbles.enabled);
+        QVERIFY(box->isChecked());
+    }
+
     void typedValueIsOneUndoStep() {
         panel_->showItem(SceneItem::sectionItem("solver"));
         NumberField* spacing = field("particle_spacing");

@@ -47,6 +47,18 @@ private Q_SLOTS:
         QVERIFY(!model.indexOf(SceneItem::elementItem("fluid_blocks", 99)).isValid());
     }
 
+    void bubblesIsASectionRow() {
+        SceneDocument document;
+        document.open(damBreak());
+        SceneTreeModel model(document);
+        const QModelIndex bubbles = model.indexOf(SceneItem::sectionItem("bubbles"));
+        QVERIFY(bubbles.isValid());
+        QVERIFY(!bubbles.parent().isValid());
+        QCOMPARE(model.data(bubbles).toString(), QStringLiteral("Bubbles"));
+        QCOMPARE(model.rowCount(bubbles), 0);
+        QCOMPARE(model.itemAt(bubbles), SceneItem::sectionItem("bubbles"));
+    }
+
     void addRemoveWithUndo() {
         SceneDocument document;
         document.open(damBreak());
