@@ -149,7 +149,8 @@ ExitCode BakeCommand::run() {
     const ProgressLine::Mode mode = quiet_                    ? ProgressLine::Mode::Silent
                                     : ::isatty(STDERR_FILENO) ? ProgressLine::Mode::InPlace
                                                               : ProgressLine::Mode::PerFrame;
-    ProgressLine progress(std::cerr, mode, loaded.scene.frames.fps, range.last());
+    ProgressLine progress(std::cerr, mode, loaded.scene.frames.fps, range.last(),
+                          loaded.scene.bubbles.enabled);
     Baker baker(loaded.scene, options);
     baker.onProgress([&](const BakeProgress& p) { progress.step(p); });
     baker.onFrame([&](int frame, const FrameStats& stats) { progress.frameDone(frame, stats); });

@@ -14,6 +14,28 @@ nlohmann::ordered_json vector(const Vec3f& v) {
     return {double(v.x()), double(v.y()), double(v.z())};
 }
 
+//! In full double precision, as the state keeps it (`vector` above rounds to float).
+nlohmann::ordered_json preciseVector(const Vec3d& v) {
+    return {v.x(), v.y(), v.z()};
+}
+
+//! {"age": n, "floating": n, "overlap": n, "impact": n}
+nlohmann::ordered_json perRule(const BubbleTally& tally) {
+    nlohmann::ordered_json counts = nlohmann::ordered_json::object();
+    for (int rule = 0; rule < BubbleTally::RuleCount; ++rule)
+        counts[std::string(BubbleTally::kRuleNames[rule])] = tally.deleted[rule];
+    return counts;
+}
+
+//! "age 2, floating 10, overlap 5, impact 1"
+std::string perRuleText(const BubbleTally& tally) {
+    std::string text;
+    for (int rule = 0; rule < BubbleTally::RuleCount; ++rule)
+        text += (rule > 0 ? ", " : "") + std::string(BubbleTally::kRuleNames[rule]) + " " +
+                std::to_string(tally.deleted[rule]);
+    return text;
+}
+
 //! [[min x, y, z], [max x, y, z]] of the particle positions; null when there are none.
 nlohmann::ordered_json bounds(const ParticleSet& fluid) {
     if (fluid.empty())
@@ -93,11 +115,28 @@ nlohmann::ordered_json InfoReport::bodiesJson() const {
     return list;
 }
 
+nlohmann::ordered_json InfoReport::bubblesJson() const {
+    const SimulationState& state = frame_.state;
+    nlohmann::ordered_json items = nlohmann::ordered_json::array();
+    for (const BubbleState& bubble : state.bubbles)
+        items.push_back({{"id", bubble.id},
+                         {"center", preciseVector(bubble.body.position)},
+                         {"radius", bubble.radius},
+                         {"velocity", preciseVector(bubble.body.linearVelocity)},
+                         {"age", bubble.age}});
+    return {{"count", state.bubbles.size()},
+            {"created_total", state.nextBubbleId},
+            {"deleted_total", perRule(state.bubblesDeleted)},
+            {"created_in_frame", frame_.stats.bubbles.created},
+            {"deleted_in_frame", perRule(frame_.stats.bubbles)},
+            {"items", items}};
+}
+
 nlohmann::ordered_json InfoReport::toJson() const {
     return {{"frame", frame_.state.frame}, {"time", frame_.state.time},
             {"steps", frame_.state.steps}, {"fluid", fluidJson()},
-            {"bodies", bodiesJson()},      {"timing", timingJson()},
-            {"cache", cacheJson()}};
+            {"bodies", bodiesJson()},      {"bubbles", bubblesJson()},
+            {"timing", timingJson()},      {"cache", cacheJson()}};
 }
 
 void InfoReport::printText(std::ostream& out) const {
@@ -117,6 +156,10 @@ void InfoReport::printText(std::ostream& out) const {
                 << fixed(corner[2], 3) << ")";
         out << " m\n";
     }
+    if (state.nextBubbleId > 0 || state.bubblesDeleted.deletedTotal() > 0)
+        out << "bubbles " << state.bubbles.size() << " alive, " << state.nextBubbleId
+            << " created, " << state.bubblesDeleted.deletedTotal() << " deleted ("
+            << perRuleText(state.bubblesDeleted) << ")\n";
     out << "timing  " << fixed(frame_.stats.wallSeconds, 3) << " s wall";
     for (const auto& [phase, seconds] : frame_.stats.phaseSeconds)
         out << ", " << phase << " " << fixed(seconds, 3) << " s";

@@ -14,8 +14,7 @@ class InfoReport {
 public:
     InfoReport(const FrameData& frame, const CacheManifest& manifest, std::string directory);
 
-    //! `frame`, `time`, `steps`, `fluid`, `bodies`, `timing`, `cache`. No `bubbles` yet: this
-    //! version has none, and an empty stand-in would read as "no bubbles were trapped".
+    //! `frame`, `time`, `steps`, `fluid`, `bodies`, `bubbles`, `timing`, `cache`.
     nlohmann::ordered_json toJson() const;
     //! A few lines for a terminal.
     void printText(std::ostream& out) const;
@@ -23,6 +22,8 @@ public:
 private:
     nlohmann::ordered_json fluidJson() const;
     nlohmann::ordered_json bodiesJson() const;
+    //! Alive bubbles with their totals since frame 1 and this frame's creations and deletions.
+    nlohmann::ordered_json bubblesJson() const;
     nlohmann::ordered_json timingJson() const;
     nlohmann::ordered_json cacheJson() const;
 

@@ -15,17 +15,26 @@ std::string format(const char* pattern, double value) {
     return text;
 }
 
+//! `counts`: what the frame holds ("25000 particles", "25000 particles  3 bubbles").
 std::string line(int frame, int lastFrame, double time, double stepsPerSecond,
-                 std::size_t particles, const std::string& eta) {
+                 const std::string& counts, const std::string& eta) {
     return "frame " + std::to_string(frame) + "/" + std::to_string(lastFrame) +
            "  t=" + format("%.3f", time) + " s  " + format("%.0f", stepsPerSecond) + " steps/s  " +
-           std::to_string(particles) + " particles  ETA " + eta;
+           counts + "  ETA " + eta;
 }
 
 } // namespace
 
-ProgressLine::ProgressLine(std::ostream& out, Mode mode, double fps, int lastFrame)
-    : out_(out), mode_(mode), fps_(fps), lastFrame_(lastFrame) {}
+ProgressLine::ProgressLine(std::ostream& out, Mode mode, double fps, int lastFrame,
+                           bool showBubbles)
+    : out_(out), mode_(mode), fps_(fps), lastFrame_(lastFrame), showBubbles_(showBubbles) {}
+
+std::string ProgressLine::counts() const {
+    std::string text = std::to_string(particles_) + " particles";
+    if (showBubbles_)
+        text += "  " + std::to_string(bubbles_) + " bubbles";
+    return text;
+}
 
 std::string ProgressLine::clock(double seconds) {
     if (seconds < 0.0 || !std::isfinite(seconds))
@@ -47,14 +56,15 @@ double ProgressLine::eta(int frame, double frameFraction) const {
 
 void ProgressLine::step(const BakeProgress& progress) {
     particles_ = progress.particles;
+    bubbles_ = progress.bubbles;
     if (mode_ != Mode::InPlace)
         return;
     const auto now = Clock::now();
     if (now - lastShown_ < kMinRedraw)
         return;
     lastShown_ = now;
-    show(line(progress.frame, lastFrame_, progress.simTime, progress.stepsPerSecond,
-              progress.particles, clock(eta(progress.frame, progress.frameFraction))));
+    show(line(progress.frame, lastFrame_, progress.simTime, progress.stepsPerSecond, counts(),
+              clock(eta(progress.frame, progress.frameFraction))));
 }
 
 void ProgressLine::frameDone(int frame, const FrameStats& stats) {
@@ -65,6 +75,9 @@ void ProgressLine::frameDone(int frame, const FrameStats& stats) {
     stepSeconds_ += stats.wallSeconds;
     if (stats.stepsInFrame > 0)
         ++framesSimulated_;
+    // Bubbles are deleted during the steps but created after the frame's last one: the last
+    // step's count lacks the new ones.
+    bubbles_ += stats.bubbles.created;
     const double time = (frame - 1) / fps_;
     if (mode_ == Mode::Silent)
         return;
@@ -77,7 +90,7 @@ void ProgressLine::frameDone(int frame, const FrameStats& stats) {
     const double stepsPerSecond =
         stats.wallSeconds > 0.0 ? stats.stepsInFrame / stats.wallSeconds : 0.0;
     const std::string text =
-        line(frame, lastFrame_, time, stepsPerSecond, particles_, clock(eta(frame, 1.0)));
+        line(frame, lastFrame_, time, stepsPerSecond, counts(), clock(eta(frame, 1.0)));
     if (mode_ == Mode::PerFrame) {
         out_ << text << '\n' << std::flush;
         return;

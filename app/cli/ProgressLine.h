@@ -1,7 +1,7 @@
 #pragma once
-// The bake's progress line: frame, sim time, steps/s, particles, ETA. On a terminal one line is
-// rewritten in place after every step (at most 10 times a second); into a pipe or a log file it
-// is one line per finished frame, so logs stay readable.
+// The bake's progress line: frame, sim time, steps/s, particles, bubbles (when the scene simulates
+// them), ETA. On a terminal one line is rewritten in place after every step (at most 10 times a
+// second); into a pipe or a log file it is one line per finished frame, so logs stay readable.
 #include "sim/Baker.h"
 #include "sim/FrameStats.h"
 
@@ -20,8 +20,9 @@ public:
         Silent,   //!< counts frames for the summary, prints nothing (--quiet)
     };
 
-    //! `fps` turns frame numbers into time; `lastFrame` is the bake's last frame.
-    ProgressLine(std::ostream& out, Mode mode, double fps, int lastFrame);
+    //! `fps` turns frame numbers into time; `lastFrame` is the bake's last frame; `showBubbles`
+    //! adds the count of alive bubbles (for scenes with bubbles enabled).
+    ProgressLine(std::ostream& out, Mode mode, double fps, int lastFrame, bool showBubbles);
 
     //! After every step (Baker::onProgress).
     void step(const BakeProgress& progress);
@@ -50,6 +51,8 @@ private:
 
     //! Seconds to the end, from the wall time per frame so far; negative while unknown.
     double eta(int frame, double frameFraction) const;
+    //! "25000 particles", and "  3 bubbles" after it when they are shown.
+    std::string counts() const;
     void show(const std::string& line);
 
     std::ostream& out_;
@@ -64,7 +67,9 @@ private:
     int framesDone_ = 0;
     //! Frames actually simulated (not the initial frame 1), the basis of the ETA.
     int framesSimulated_ = 0;
+    bool showBubbles_;
     std::size_t particles_ = 0;
+    std::size_t bubbles_ = 0; //!< alive at the last step or frame end
     std::uint64_t steps_ = 0;
     double stepSeconds_ = 0.0;
 };

@@ -131,6 +131,7 @@ Simulation::Advance Baker::bakeFrame(Simulation& simulation, FrameCache& cache,
         progress.frameFraction = frameFraction;
         progress.simTime = simulation.state().time;
         progress.particles = simulation.state().fluid.size();
+        progress.bubbles = simulation.state().bubbles.size();
         progress.stepsPerSecond =
             elapsed > 0.0 ? double(simulation.state().steps - stepsAtStart) / elapsed : 0.0;
         if (onProgress_)

@@ -43,6 +43,7 @@ struct BakeProgress {
     double frameFraction = 0.0; //!< 0–1 of the current frame
     double stepsPerSecond = 0.0;
     std::size_t particles = 0;
+    std::size_t bubbles = 0;  //!< alive after the step
     double etaSeconds = -1.0; //!< negative until a frame has finished
 };
 

@@ -3,6 +3,7 @@
 #include "cache/FrameCache.h"
 #include "cli/CliTestSupport.h"
 
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <csignal>
 #include <filesystem>
@@ -22,6 +23,36 @@ std::vector<std::uint8_t> stateBytes(const std::string& cacheDir, int frame) {
 
 std::vector<int> framesOf(const std::string& cacheDir) {
     return FrameCache::open(cacheDir).frames();
+}
+
+//! A bubble of `radius` at `centre`, rising at `velocity`, `age` seconds old.
+BubbleState bubbleAt(std::uint32_t id, const Vec3d& centre, double radius, const Vec3d& velocity,
+                     double age) {
+    BubbleState bubble;
+    bubble.id = id;
+    bubble.birthFrame = 2;
+    bubble.radius = radius;
+    bubble.body.position = centre;
+    bubble.body.linearVelocity = velocity;
+    bubble.age = age;
+    return bubble;
+}
+
+//! The tiny scene with bubbles switched on.
+std::string tinyBubbleSceneText(int endFrame) {
+    nlohmann::json scene = nlohmann::json::parse(tinySceneText(endFrame));
+    scene["bubbles"] = {{"enabled", true}};
+    return scene.dump(4) + "\n";
+}
+
+//! The alive bubbles the per-frame progress line of `frame` reports ("... 2 bubbles  ETA"),
+//! or -1 when that line has no bubble count.
+int bubblesOnProgressLine(const QString& err, int frame) {
+    const QRegularExpression pattern(
+        QStringLiteral("^frame %1/\\d+ .* particles  (\\d+) bubbles  ETA ").arg(frame),
+        QRegularExpression::MultilineOption);
+    const QRegularExpressionMatch match = pattern.match(err);
+    return match.hasMatch() ? match.captured(1).toInt() : -1;
 }
 
 std::vector<int> oneTo(int last) {
@@ -163,13 +194,93 @@ private Q_SLOTS:
         QVERIFY(info.at("timing").contains("wall_seconds"));
         QVERIFY(info.at("timing").contains("neighbours"));
         QCOMPARE(info.at("cache").at("frames"), nlohmann::json({1, 2, 3, 4}));
-        QVERIFY2(!info.contains("bubbles"), "no bubbles in this version: no fake key");
+        // Bubbles are off in this scene: none alive, none ever made or deleted.
+        const nlohmann::json& bubbles = info.at("bubbles");
+        QCOMPARE(bubbles.at("count").get<int>(), 0);
+        QCOMPARE(bubbles.at("created_total").get<int>(), 0);
+        QCOMPARE(bubbles.at("deleted_total"),
+                 nlohmann::json({{"age", 0}, {"floating", 0}, {"overlap", 0}, {"impact", 0}}));
+        QCOMPARE(bubbles.at("items"), nlohmann::json::array());
 
         const CliResult second = runCli(args({"info", cache_, "--frame", "2", "--json"}));
         QCOMPARE_EXIT(second, 0);
         QCOMPARE(nlohmann::json::parse(second.out.toStdString()).at("frame").get<int>(), 2);
         QCOMPARE_EXIT(runCli(args({"info", cache_, "--frame", "9"})), 2);
         QCOMPARE_EXIT(runCli(args({"info", root_})), 2); // not a cache
+    }
+
+    void infoReportsTheFramesBubbles() {
+        bake(cache_);
+        // Bubbles written into frame 4 as a bake with bubbles would leave them: two alive, five
+        // made so far, three deleted (one of them, by the floating rule, during frame 4).
+        FrameCache cache = FrameCache::open(cache_);
+        FrameData frame = cache.readFrame(4);
+        frame.state.bubbles = {bubbleAt(3, Vec3d(0.1, 0.08, 0.12), 0.02, Vec3d(0, 0.05, 0), 0.03),
+                               bubbleAt(4, Vec3d(0.05, 0.1, 0.1), 0.015, Vec3d(0.01, 0, 0), 0.0)};
+        frame.state.nextBubbleId = 5;
+        frame.state.bubblesDeleted.deleted = {1, 1, 0, 1};
+        frame.stats.bubbles.created = 1;
+        frame.stats.bubbles.deleted = {0, 1, 0, 0};
+        cache.writeFrame(frame.state, frame.stats);
+
+        const CliResult result = runCli(args({"info", cache_, "--json"}));
+        QCOMPARE_EXIT(result, 0);
+        const nlohmann::json bubbles =
+            nlohmann::json::parse(result.out.toStdString()).at("bubbles");
+        QCOMPARE(bubbles.at("count").get<int>(), 2);
+        QCOMPARE(bubbles.at("created_total").get<int>(), 5);
+        QCOMPARE(bubbles.at("deleted_total"),
+                 nlohmann::json({{"age", 1}, {"floating", 1}, {"overlap", 0}, {"impact", 1}}));
+        QCOMPARE(bubbles.at("created_in_frame").get<int>(), 1);
+        QCOMPARE(bubbles.at("deleted_in_frame"),
+                 nlohmann::json({{"age", 0}, {"floating", 1}, {"overlap", 0}, {"impact", 0}}));
+        const nlohmann::json& items = bubbles.at("items");
+        QCOMPARE(items.size(), std::size_t(2));
+        QCOMPARE(items[0].at("id").get<int>(), 3);
+        QCOMPARE(items[0].at("center"), nlohmann::json({0.1, 0.08, 0.12}));
+        QCOMPARE(items[0].at("radius").get<double>(), 0.02);
+        QCOMPARE(items[0].at("velocity"), nlohmann::json({0.0, 0.05, 0.0}));
+        QCOMPARE(items[0].at("age").get<double>(), 0.03);
+        QCOMPARE(items[1].at("id").get<int>(), 4);
+        QCOMPARE(items[1].at("center"), nlohmann::json({0.05, 0.1, 0.1}));
+        QCOMPARE(items[1].at("radius").get<double>(), 0.015);
+
+        const CliResult text = runCli(args({"info", cache_}));
+        QCOMPARE_EXIT(text, 0);
+        QVERIFY_CONTAINS(text.out, "bubbles 2 alive, 5 created, 3 deleted "
+                                   "(age 1, floating 1, overlap 0, impact 1)");
+    }
+
+    void progressLineCountsTheAliveBubbles() {
+        const std::string scene = writeScene("bubbles.json", tinyBubbleSceneText(4));
+        QCOMPARE_EXIT(runCli(args({"bake", scene, "--out", cache_, "--frames", ":2"})), 0);
+        // Two bubbles in the air above the water at the end of frame 2; the bake resumes there.
+        FrameCache cache = FrameCache::open(cache_);
+        FrameData frame = cache.readFrame(2);
+        frame.state.bubbles = {bubbleAt(0, Vec3d(0.08, 0.3, 0.08), 0.03, Vec3d::Zero(), 0.0),
+                               bubbleAt(1, Vec3d(0.22, 0.3, 0.22), 0.03, Vec3d::Zero(), 0.0)};
+        frame.state.nextBubbleId = 2;
+        cache.writeFrame(frame.state, frame.stats);
+
+        const CliResult result = runCli(args({"bake", scene, "--out", cache_, "--resume"}));
+        QCOMPARE_EXIT(result, 0);
+        // One line per frame (stderr is a pipe), each counting the bubbles its frame ends with.
+        cache.reload();
+        for (const int done : {3, 4}) {
+            const int alive = int(cache.readFrame(done).state.bubbles.size());
+            QVERIFY2(bubblesOnProgressLine(result.err, done) == alive,
+                     qPrintable(QStringLiteral("frame %1 has %2 bubbles; stderr: %3")
+                                    .arg(done)
+                                    .arg(alive)
+                                    .arg(result.err)));
+        }
+        QVERIFY2(cache.readFrame(3).state.bubbles.size() > 0, qPrintable(result.err));
+
+        // Without bubbles in the scene the line does not mention them.
+        const CliResult plain = runCli(args({"bake", scene_, "--out", path("plain")}));
+        QCOMPARE_EXIT(plain, 0);
+        QVERIFY_CONTAINS(plain.err, "frame 4/4");
+        QVERIFY2(!plain.err.contains("bubbles"), qPrintable(plain.err));
     }
 
     void existingCacheIsNotClobbered() {
