@@ -75,9 +75,7 @@ void ProgressLine::frameDone(int frame, const FrameStats& stats) {
     stepSeconds_ += stats.wallSeconds;
     if (stats.stepsInFrame > 0)
         ++framesSimulated_;
-    // Bubbles are deleted during the steps but created after the frame's last one: the last
-    // step's count lacks the new ones.
-    bubbles_ += stats.bubbles.created;
+    // Bubbles are created and deleted during the steps: the last step's count is the frame's.
     const double time = (frame - 1) / fps_;
     if (mode_ == Mode::Silent)
         return;

@@ -28,7 +28,16 @@ bool isGhost(const NeighborGrid& grid, const Vec3i& c) {
 } // namespace
 
 std::vector<AirPocket> AirPocketFinder::find(const NeighborGrid& grid, const SolidTest& isSolid) {
-    classify(grid, isSolid);
+    solidScratch_.assign(grid.cellTotal(), 0);
+    for (int cell = 0; cell < static_cast<int>(grid.cellTotal()); ++cell)
+        if (grid.cellCount(cell) == 0 && !isGhost(grid, coordinatesOf(grid, cell)))
+            solidScratch_[cell] = isSolid(centreOf(grid, cell)) ? 1 : 0;
+    return find(grid, solidScratch_);
+}
+
+std::vector<AirPocket> AirPocketFinder::find(const NeighborGrid& grid,
+                                             const std::vector<std::uint8_t>& solid) {
+    classify(grid, solid);
     floodAtmosphere(grid);
     std::vector<AirPocket> pockets;
     for (int cell = 0; cell < static_cast<int>(cells_.size()); ++cell)
@@ -40,14 +49,16 @@ std::vector<AirPocket> AirPocketFinder::find(const NeighborGrid& grid, const Sol
     return pockets;
 }
 
-void AirPocketFinder::classify(const NeighborGrid& grid, const SolidTest& isSolid) {
+void AirPocketFinder::classify(const NeighborGrid& grid, const std::vector<std::uint8_t>& solid) {
     cells_.assign(grid.cellTotal(), Cell::Blocked);
-    for (int cell = 0; cell < static_cast<int>(cells_.size()); ++cell) {
-        if (grid.cellCount(cell) > 0 || isGhost(grid, coordinatesOf(grid, cell)))
-            continue;
-        if (!isSolid(centreOf(grid, cell)))
-            cells_[cell] = Cell::Air;
-    }
+    const Vec3i& dims = grid.dimensions();
+    for (int k = 1; k < dims.z() - 1; ++k)
+        for (int j = 1; j < dims.y() - 1; ++j)
+            for (int i = 1; i < dims.x() - 1; ++i) {
+                const int cell = grid.linearIndex(i, j, k);
+                if (grid.cellCount(cell) == 0 && solid[cell] == 0)
+                    cells_[cell] = Cell::Air;
+            }
 }
 
 void AirPocketFinder::floodAtmosphere(const NeighborGrid& grid) {

@@ -22,11 +22,14 @@ public:
     //! The pockets of `grid` (built on the water's positions), largest first, ties broken by
     //! the lowest cell index so the order is deterministic.
     std::vector<AirPocket> find(const NeighborGrid& grid, const SolidTest& isSolid);
+    //! The same with the solid cells given as a mask, one byte per grid cell (non-zero: solid):
+    //! what the simulation uses, one pass over the cells without a query per cell.
+    std::vector<AirPocket> find(const NeighborGrid& grid, const std::vector<std::uint8_t>& solid);
 
 private:
     enum class Cell : std::uint8_t { Blocked, Air, Atmosphere, Pocket };
 
-    void classify(const NeighborGrid& grid, const SolidTest& isSolid);
+    void classify(const NeighborGrid& grid, const std::vector<std::uint8_t>& solid);
     void floodAtmosphere(const NeighborGrid& grid);
     //! Marks the pocket holding `seed` and returns it.
     AirPocket collectPocket(const NeighborGrid& grid, int seed);
@@ -36,6 +39,7 @@ private:
 
     std::vector<Cell> cells_;
     std::vector<int> queue_;
+    std::vector<std::uint8_t> solidScratch_;
 };
 
 } // namespace airtrap

@@ -46,6 +46,11 @@ BubbleDynamics::BubbleDynamics(const BubbleSettings& bubbles, const SolverSettin
 
 void BubbleDynamics::syncBodies(std::vector<RigidBody>& bodies, std::size_t first,
                                 const std::vector<BubbleState>& bubbles) {
+    if (sameBubbles(bubbles)) { // most steps: only the states moved on
+        for (std::size_t k = 0; k < bubbles.size(); ++k)
+            bodies[first + k].setState(bubbles[k].body);
+        return;
+    }
     std::vector<RigidBody> kept;
     kept.reserve(bubbles.size());
     std::size_t old = 0;
@@ -68,6 +73,15 @@ void BubbleDynamics::syncBodies(std::vector<RigidBody>& bodies, std::size_t firs
         bodyIds_.push_back(bubble.id);
         radii_.push_back(bubble.radius);
     }
+}
+
+bool BubbleDynamics::sameBubbles(const std::vector<BubbleState>& bubbles) const {
+    if (bubbles.size() != bodyIds_.size())
+        return false;
+    for (std::size_t k = 0; k < bubbles.size(); ++k)
+        if (bubbles[k].id != bodyIds_[k])
+            return false;
+    return true;
 }
 
 double BubbleDynamics::riseSpeed(double radius) const {

@@ -52,6 +52,8 @@ public:
     double riseSpeed(double radius) const;
 
 private:
+    //! Whether the bodies from `first` on are those of `bubbles` already.
+    bool sameBubbles(const std::vector<BubbleState>& bubbles) const;
     BubbleSurroundings measureOne(const RigidBody& body, double radius, const ParticleSet& fluid,
                                   const PositionArrays& positions, const NeighborGrid& grid) const;
 

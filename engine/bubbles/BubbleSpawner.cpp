@@ -37,10 +37,7 @@ std::size_t BubbleSpawner::spawn(SimulationState& state, const Water& water,
         return 0;
     const NeighborGrid& grid = water.grid;
     markSolidCells(grid, state, solids);
-    const std::vector<AirPocket> pockets = finder_.find(grid, [&](const Vec3d& centre) {
-        const Vec3i c = grid.cellCoordinates(centre.cast<float>());
-        return solid_[grid.linearIndex(c.x(), c.y(), c.z())] != 0;
-    });
+    const std::vector<AirPocket> pockets = finder_.find(grid, solid_);
     std::vector<FittedBubble> pool = candidates(pockets, water, solids);
     // The step count makes every search's choice its own, and the same on a resumed bake.
     SplitMix64 random(seed_ ^ (0xA1B2C3D4E5F60718ull * (state.steps + 1)));

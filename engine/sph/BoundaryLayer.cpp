@@ -36,6 +36,26 @@ void BoundaryLayer::rebuild(const std::vector<RigidBody>& bodies,
         psi_[s] = unsortedPsi_[from];
         bodyOf_[s] = unsortedBodyOf_[from];
     }
+    markReach();
+}
+
+void BoundaryLayer::markReach() {
+    nearCells_.assign(grid_.cellTotal(), 0);
+    // Particles are never in ghost cells (the grid puts them in the inner cells), so their
+    // neighbours are inside the grid. Sorted by cell, each cell is marked around once.
+    int previous = -1;
+    for (const Vec3f& x : positions_) {
+        const Vec3i c = grid_.cellCoordinates(x);
+        const int cell = grid_.linearIndex(c.x(), c.y(), c.z());
+        if (cell == previous)
+            continue;
+        previous = cell;
+        for (int dz = -1; dz <= 1; ++dz)
+            for (int dy = -1; dy <= 1; ++dy) {
+                const int row = grid_.linearIndex(c.x() - 1, c.y() + dy, c.z() + dz);
+                nearCells_[row] = nearCells_[row + 1] = nearCells_[row + 2] = 1;
+            }
+    }
 }
 
 void BoundaryLayer::placeBody(const RigidBody& body, std::uint32_t index, std::size_t first) {
@@ -54,6 +74,7 @@ std::size_t BoundaryLayer::allocatedBytes() const {
     return grid_.allocatedBytes() +
            (positions_.capacity() + normals_.capacity() + velocities_.capacity()) * sizeof(Vec3f) +
            psi_.capacity() * sizeof(float) + bodyOf_.capacity() * sizeof(std::uint32_t) +
+           nearCells_.capacity() +
            (unsortedPositions_.capacity() + unsortedNormals_.capacity() +
             unsortedVelocities_.capacity()) *
                sizeof(Vec3f) +

@@ -27,11 +27,20 @@ public:
     const std::vector<float>& psi() const { return psi_; }
     //! Index into the bodies of rebuild() of each sorted particle's body.
     const std::vector<std::uint32_t>& bodyOf() const { return bodyOf_; }
+    //! Whether any particle of the layer lies in the 27 cells around x's cell: when not, a water
+    //! particle at x skips the layer's neighbour sweep (most of the water is far from the walls
+    //! and from any moving body).
+    bool reaches(const Vec3f& x) const {
+        const Vec3i c = grid_.cellCoordinates(x);
+        return nearCells_[grid_.linearIndex(c.x(), c.y(), c.z())] != 0;
+    }
     std::size_t allocatedBytes() const;
 
 private:
     //! Writes the world-space data of `body`'s particles into the unsorted arrays from `first`.
     void placeBody(const RigidBody& body, std::uint32_t index, std::size_t first);
+    //! Marks the cells whose 27-cell neighbourhood holds a particle.
+    void markReach();
 
     float restDensity_;
     NeighborGrid grid_;
@@ -40,6 +49,7 @@ private:
     std::vector<Vec3f> velocities_;
     std::vector<float> psi_;
     std::vector<std::uint32_t> bodyOf_;
+    std::vector<std::uint8_t> nearCells_; //!< per cell: a particle within one cell
     // The same in the bodies' order, before sorting.
     std::vector<Vec3f> unsortedPositions_;
     std::vector<Vec3f> unsortedNormals_;
