@@ -1,5 +1,6 @@
 // A bake is a pure function of the scene: the same bits on 1 or 2 threads, and a bake resumed
 // from a cached frame continues bit-for-bit like one that never stopped.
+#include "BubbleTestSupport.h"
 #include "cache/FrameCache.h"
 #include "core/ThreadLimit.h"
 #include "scene/SceneJson.h"
@@ -43,6 +44,20 @@ Scene splash() {
     paddle.angularVelocity = Vec3d(0.0, 0.0, 2.0);
     scene.bodies.push_back(paddle);
     return scene;
+}
+
+//! The splash with bubbles: two placed in the water at t = 0, and pockets searched every 3 steps.
+Scene splashWithBubbles() {
+    Scene scene = splash();
+    scene.bubbles.enabled = true;
+    scene.bubbles.pocketInterval = 3;
+    scene.bubbles.maxFloatingTime = 0.02; // so that deletions happen within the run
+    return scene;
+}
+
+std::vector<BubbleState> twoBubbles() {
+    return {test::bubbleAt(0, Vec3d(0.1, 0.1, 0.1), 0.04),
+            test::bubbleAt(1, Vec3d(0.1, 0.15, 0.2), 0.035)};
 }
 
 SimulationState bakeFrom(Simulation& simulation, int lastFrame) {
@@ -98,6 +113,36 @@ private Q_SLOTS:
         QCOMPARE(continued.steps, uninterrupted.steps);
         QVERIFY(continued.fluid.positions == uninterrupted.fluid.positions);
         QVERIFY(continued == uninterrupted);
+    }
+
+    void bubblesAreDeterministicAndResumeBitIdentical() {
+        const Scene scene = splashWithBubbles();
+        SimulationState one;
+        {
+            ThreadLimit limit(1);
+            auto simulation = test::simulationWithBubbles(scene, twoBubbles());
+            one = bakeFrom(*simulation, scene.frames.endFrame);
+        }
+        ThreadLimit limit(2);
+        auto straight = test::simulationWithBubbles(scene, twoBubbles());
+        const SimulationState uninterrupted = bakeFrom(*straight, scene.frames.endFrame);
+        QVERIFY(one == uninterrupted);
+        QVERIFY2(uninterrupted.bubblesDeleted.deletedTotal() > 0 ||
+                     uninterrupted.nextBubbleId > 2,
+                 "no bubble came or went: the bubbles' bookkeeping went untested");
+
+        QTemporaryDir dir;
+        const std::string path = dir.filePath("cache").toStdString();
+        {
+            FrameCache cache =
+                FrameCache::create(path, sceneToJson(scene), parameterHash(scene), 60.0);
+            auto first = test::simulationWithBubbles(scene, twoBubbles());
+            bakeFrom(*first, 3);
+            QVERIFY(!first->state().bubbles.empty());
+            cache.writeFrame(first->state(), first->lastFrameStats());
+        }
+        Simulation resumed(scene, FrameCache::open(path).readFrame(3).state);
+        QVERIFY(bakeFrom(resumed, scene.frames.endFrame) == uninterrupted);
     }
 };
 
