@@ -120,10 +120,17 @@ std::vector<FittedBubble> BubbleSpawner::candidates(const std::vector<AirPocket>
         std::optional<FittedBubble> bubble = fitter_.fit(pocket, water.grid, water.positions);
         if (!bubble)
             continue;
-        // Like water, a body keeps half a spacing from the bubble's surface.
-        for (const RigidBody* body : solids)
+        // Like water, a body keeps half a spacing from the bubble's surface. A mesh body's field
+        // reads at most its band's width (2.5 spacings), which caps bubbles inside its bounding
+        // sphere at 2 spacings; those outside it are left alone.
+        for (const RigidBody* body : solids) {
+            const double clearance = (bubble->centre - body->shapePose().position).norm() -
+                                     body->shape().boundingRadius();
+            if (clearance > bubble->radius + 0.5 * spacing_)
+                continue;
             bubble->radius =
                 std::min(bubble->radius, body->signedDistance(bubble->centre) - 0.5 * spacing_);
+        }
         if (bubble->radius >= settings_.minRadius * spacing_)
             fitted.push_back(*bubble);
     }

@@ -31,9 +31,10 @@ std::vector<BoundParameter> creationParameters() {
                             .unit = "× spacing",
                             .minimum = 1.0,
                             .maximum = 20.0,
-                            .defaultValue = 1.5,
+                            .defaultValue = 1.0,
                             .help = "Air pockets whose fitted bubble would be smaller make no "
-                                    "bubble (they are left to the sub-grid bubbles)."},
+                                    "bubble (they are left to the sub-grid bubbles). One spacing "
+                                    "lets a single empty grid cell (two spacings wide) count."},
                            &BubbleSettings::minRadius),
         bind<BubbleAccess>({.key = "max_new_per_frame",
                             .label = "New bubbles per frame",

@@ -108,7 +108,7 @@ struct BodyKeyframe {
 struct BubbleSettings {
     bool enabled = false;
     double densityRatio = 0.1;          //!< bubble density / water density (paper: 0.1)
-    double minRadius = 1.5;             //!< particle spacings; smaller pockets make no bubble
+    double minRadius = 1.0;             //!< particle spacings; smaller pockets make no bubble
     int maxNewPerFrame = 5;             //!< bubbles created per frame at most
     int pocketInterval = 10;            //!< steps between air-pocket searches
     double kinematicViscosity = 1.0e-6; //!< m²/s, ν of water in the Stokes speed (eq. 5)

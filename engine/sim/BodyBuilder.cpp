@@ -18,6 +18,12 @@ namespace {
 constexpr double kVoxelsPerSpacing = 2.0;
 //! Interior band of the field, in voxels: deep enough for any contact the solver resolves.
 constexpr double kInteriorBandVoxels = 8.0;
+//! Exterior band, in voxels (2.5 spacings). Beyond it the field reads the band's width, so it
+//! must reach past what is asked of it: contacts look half a spacing out, and the air-pocket
+//! search asks whether a body comes within half a grid cell's diagonal (√3 spacings) of a cell's
+//! centre. With a narrower band every cell near a mesh body would look solid and no air could be
+//! trapped next to one.
+constexpr double kExteriorBandVoxels = 5.0;
 
 std::string bodyLabel(const Scene& scene, const RigidBodySettings& body) {
     std::size_t index = 0;
@@ -25,6 +31,11 @@ std::string bodyLabel(const Scene& scene, const RigidBodySettings& body) {
         ++index;
     return (scene.sourcePath.empty() ? std::string("scene") : scene.sourcePath) + ": bodies[" +
            std::to_string(index) + "] (" + ParameterCodec::formatValue(body.name) + ")";
+}
+
+BodyShape meshShape(const TriangleMesh& mesh, double spacing) {
+    return BodyShape::mesh(std::make_shared<SignedDistanceField>(
+        mesh, spacing / kVoxelsPerSpacing, kExteriorBandVoxels, kInteriorBandVoxels));
 }
 
 //! Moves every particle `distance` along its normal.
@@ -71,11 +82,8 @@ BodyShape BodyBuilder::shapeOf(const Scene& scene, const RigidBodySettings& body
         return BodyShape::sphere(body.radius);
     if (body.shape == "cylinder")
         return BodyShape::cylinder(body.radius, body.height);
-    if (body.shape == "mesh") {
-        const double voxel = spacing / kVoxelsPerSpacing;
-        return BodyShape::mesh(std::make_shared<SignedDistanceField>(loadMesh(scene, body), voxel,
-                                                                     3.0, kInteriorBandVoxels));
-    }
+    if (body.shape == "mesh")
+        return meshShape(loadMesh(scene, body), spacing);
     return BodyShape::box(body.size);
 }
 
@@ -84,9 +92,7 @@ RigidBody BodyBuilder::build(std::size_t index) const {
     std::optional<TriangleMesh> mesh;
     if (body.shape == "mesh")
         mesh = loadMesh(scene_, body);
-    BodyShape shape = mesh ? BodyShape::mesh(std::make_shared<SignedDistanceField>(
-                                 *mesh, spacing_ / kVoxelsPerSpacing, 3.0, kInteriorBandVoxels))
-                           : shapeOf(scene_, body, spacing_);
+    BodyShape shape = mesh ? meshShape(*mesh, spacing_) : shapeOf(scene_, body, spacing_);
     const RigidPose pose{body.position, EulerRotation::fromDegrees(body.rotation)};
     RigidBody rigid(body.name, sampleBoundary(body, mesh ? &*mesh : nullptr), std::move(shape),
                     pose);

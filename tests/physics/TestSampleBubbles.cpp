@@ -69,6 +69,7 @@ private Q_SLOTS:
         // The bunny is the scene's only body, the last before the bubbles' bodies.
         const std::size_t bunnyIndex = simulation.solver().firstBubbleBody() - 1;
         std::set<std::uint32_t> checked;
+        double farthest = 0.0; // from the bunny, in its bounding radii, where a bubble was made
         while (simulation.frame() < scene.frames.endFrame) {
             simulation.advanceFrame(never);
             const RigidBody& bunny = simulation.solver().bodies()[bunnyIndex];
@@ -80,10 +81,14 @@ private Q_SLOTS:
                          qPrintable(QString("bubble %1 created inside the bunny (%2 m)")
                                         .arg(bubble.id)
                                         .arg(clearance)));
+                farthest = std::max(farthest, (bubble.body.position - bunny.position()).norm() /
+                                                  bunny.shape().boundingRadius());
             }
         }
-        qInfo("%zu bubbles created while the bunny dived", checked.size());
+        qInfo("%zu bubbles created while the bunny dived, at most %.2f bounding radii from it",
+              checked.size(), farthest);
         QVERIFY2(checked.size() >= 1, "no air trapped in the wake");
+        QVERIFY2(farthest < 3.0, "bubbles made away from the bunny: not its wake");
     }
 };
 
