@@ -91,6 +91,32 @@ bool isBubble(const QColor& colour) {
     return colour.red() >= 100 && isShadedAs(colour, BubbleDrawable::colour());
 }
 
+// A 0.3 m body low in the dam break's water column and a bubble higher up, both wholly inside it.
+const Vec3d kSunkenBody(0.25, 0.3, 0.2);
+const Vec3d kSunkenBubble(0.25, 0.75, 0.2);
+constexpr double kSunkenBubbleRadius = 0.12;
+
+//! The dam break with its body standing in the water column.
+Scene damBreakWithSunkenBody() {
+    Scene scene = damBreakWithBody();
+    scene.bodies[0].position = kSunkenBody;
+    return scene;
+}
+
+//! Frame 1 of the dam break with the sunken body, and a bubble centred at `bubbleCentre`. The
+//! water is simulated without the body, which would overlap it.
+std::shared_ptr<const FrameData> frameWithSunkenBubble(const Vec3d& bubbleCentre) {
+    FrameData frame = *initialFrame(damBreak());
+    RigidBodyState body;
+    body.position = kSunkenBody;
+    frame.state.bodies = {body};
+    BubbleState bubble;
+    bubble.radius = kSunkenBubbleRadius;
+    bubble.body.position = bubbleCentre;
+    frame.state.bubbles = {bubble};
+    return std::make_shared<const FrameData>(frame);
+}
+
 QVector3D toQt(const Vec3d& v) {
     return QVector3D(float(v.x()), float(v.y()), float(v.z()));
 }
@@ -163,6 +189,21 @@ private:
 
     QPointF project(const ViewportWidget& viewport, const QVector3D& point) {
         return viewport.camera().project(point, viewport.size());
+    }
+
+    //! Pixels of `image` that pass `test`, split at the outline (with a margin for perspective)
+    //! of the sphere of `radius` m at `centre`.
+    template <typename Test>
+    PixelSplit splitAtSphere(const ViewportWidget& viewport, const QImage& image,
+                             const Vec3d& centre, double radius, Test test) {
+        const QMatrix4x4 view = viewport.camera().viewMatrix();
+        const QVector3D across(view(0, 0), view(0, 1), view(0, 2)); // the camera's right
+        const QPointF centrePixel = project(viewport, toQt(centre));
+        const QPointF edgePixel = project(viewport, toQt(centre) + float(radius) * across);
+        const qreal ratio = viewport.devicePixelRatio();
+        const double outline = 1.1 * QLineF(centrePixel, edgePixel).length() * ratio + 2.0;
+        return splitAround(image, centrePixel * ratio, outline,
+                           [&](int x, int y) { return test(image.pixelColor(x, y)); });
     }
 
 private Q_SLOTS:
@@ -285,6 +326,75 @@ private Q_SLOTS:
         QVERIFY2(isWater(slow), qPrintable(describe(slow)));
         QVERIFY2(fast.red() > 220 && fast.green() > 220 && fast.blue() > 220,
                  qPrintable(describe(fast)));
+    }
+
+    void hidingTheWaterShowsWhatItSurrounds() {
+        const auto viewport = shownViewport();
+        QVERIFY(viewport);
+        const Scene scene = damBreakWithSunkenBody();
+        viewport->setScene(scene);
+        viewport->setShowAxes(false); // the z axis is as blue as the water
+        viewport->setBubblesThroughWater(false);
+        viewport->setFrame(frameWithSunkenBubble(kSunkenBubble));
+        QVERIFY(viewport->showsWater());
+        const qreal ratio = viewport->devicePixelRatio();
+        const QPointF body = project(*viewport, toQt(kSunkenBody));
+        const QPointF bubble = project(*viewport, toQt(kSunkenBubble));
+        const QImage water = viewport->grabFramebuffer();
+        const int waterPixels = countWater(water);
+        QVERIFY(waterPixels > 0);
+        QCOMPARE(countAround(water, body, 4, ratio, isDynamicBody), 0);
+        QCOMPARE(countAround(water, bubble, 3, ratio, isBubble), 0);
+
+        // Nothing water-coloured is left, neither particles nor the legend's slow end, but for
+        // the bubble: its whitened rim is as blue as the water.
+        viewport->setShowWater(false);
+        QVERIFY(!viewport->showsWater());
+        const QImage dry = viewport->grabFramebuffer();
+        const PixelSplit left =
+            splitAtSphere(*viewport, dry, kSunkenBubble, kSunkenBubbleRadius, isWater);
+        QCOMPARE(left.outside, 0);
+        QCOMPARE(countAround(dry, body, 4, ratio, isDynamicBody), 81);
+        QCOMPARE(countAround(dry, bubble, 3, ratio, isBubble), 49);
+
+        viewport->setShowWater(true);
+        QCOMPARE(countWater(viewport->grabFramebuffer()), waterPixels);
+    }
+
+    void bubblesShowThroughWaterButNotThroughBodies() {
+        const auto viewport = shownViewport();
+        QVERIFY(viewport);
+        const Scene scene = damBreakWithSunkenBody();
+        viewport->setScene(scene);
+        viewport->setFrame(frameWithSunkenBubble(kSunkenBubble));
+        QVERIFY(viewport->drawsBubblesThroughWater());
+        const qreal ratio = viewport->devicePixelRatio();
+        const QPointF body = project(*viewport, toQt(kSunkenBody));
+        const QPointF bubble = project(*viewport, toQt(kSunkenBubble));
+        const QImage through = viewport->grabFramebuffer();
+        QCOMPARE(countAround(through, bubble, 3, ratio, isBubble), 49);
+        // Only the bubble comes through: the water still hides the body.
+        QCOMPARE(countAround(through, body, 4, ratio, isDynamicBody), 0);
+        QVERIFY(countWater(through) > 0);
+
+        viewport->setBubblesThroughWater(false);
+        const QImage hidden = viewport->grabFramebuffer();
+        QCOMPARE(
+            splitAtSphere(*viewport, hidden, kSunkenBubble, kSunkenBubbleRadius, isBubble).inside,
+            0);
+
+        // A bubble inside the body stays hidden, water or not: the body is in front of it.
+        viewport->setBubblesThroughWater(true);
+        viewport->setFrame(frameWithSunkenBubble(kSunkenBody));
+        QCOMPARE(viewport->bubbleCount(), 1);
+        for (const bool water : {true, false}) {
+            viewport->setShowWater(water);
+            const QImage image = viewport->grabFramebuffer();
+            QCOMPARE(
+                splitAtSphere(*viewport, image, kSunkenBody, kSunkenBubbleRadius, isBubble).inside,
+                0);
+            QCOMPARE(countAround(image, body, 4, ratio, isDynamicBody), water ? 0 : 81);
+        }
     }
 
     void nullFrameReturnsToEditMode() {

@@ -123,6 +123,16 @@ void ViewportWidget::setShowGizmos(bool show) {
     update();
 }
 
+void ViewportWidget::setShowWater(bool show) {
+    showWater_ = show;
+    update();
+}
+
+void ViewportWidget::setBubblesThroughWater(bool through) {
+    bubblesThroughWater_ = through;
+    update();
+}
+
 void ViewportWidget::setParticleRadius(float metres) {
     particleRadiusOverride_ = metres > 0.0f ? std::optional<float>(metres) : std::nullopt;
     updateParticleLook();
@@ -170,7 +180,7 @@ float ViewportWidget::aspectRatio() const {
 // --- OpenGL --------------------------------------------------------------------------------------
 
 std::array<Drawable*, 6> ViewportWidget::drawables() {
-    return {&particles_, &bubbleDrawable_, &bodyDrawable_, &grid_, &axes_, &boxes_};
+    return {&bubbleDrawable_, &bodyDrawable_, &particles_, &grid_, &axes_, &boxes_};
 }
 
 void ViewportWidget::initializeGL() {
@@ -208,12 +218,15 @@ void ViewportWidget::paintGL() {
     // which may leave its own clear colour behind.
     const QColor background = clearColor();
     gl->glClearColor(background.redF(), background.greenF(), background.blueF(), 1.0f);
-    gl->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    gl->glClearStencil(0);
+    gl->glStencilMask(0xFF);
+    gl->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     if (!hasScene_ && !isPlayback()) {
         return;
     }
     drawScene();
-    if (isPlayback()) {
+    // The legend explains the water's colours: without water it explains nothing.
+    if (isPlayback() && showWater_) {
         paintLegend();
     }
 }
@@ -229,11 +242,7 @@ void ViewportWidget::drawScene() {
                                 ratio};
     context.gl.glEnable(GL_DEPTH_TEST);
     context.gl.glDepthFunc(GL_LEQUAL); // lines on box faces and the floor win ties
-    particles_.draw(context);
-    bubbleDrawable_.draw(context);
-    if (hasScene_) {
-        bodyDrawable_.draw(context);
-    }
+    drawSolids(context);
     if (hasScene_ && showGrid_) {
         grid_.draw(context);
     }
@@ -244,6 +253,35 @@ void ViewportWidget::drawScene() {
         boxes_.draw(context);
     }
     context.gl.glDisable(GL_DEPTH_TEST);
+}
+
+void ViewportWidget::drawSolids(const RenderContext& context) {
+    // Bubbles through water: the water must not cover a bubble, a body in front must. Depth alone
+    // cannot tell the two apart, so the stencil marks the pixels where a bubble is the nearest
+    // solid: the bubbles set the mark, the bodies drawn next clear it where they pass in front,
+    // and the water is then kept off the marked pixels. Each part is drawn once, and the depth
+    // left behind is the bubble's where it shows, so the lines drawn later still sort with it.
+    // The bubbles stay opaque: blended with the water's bright speed colours a translucent sphere
+    // would be hard to tell from the water, and its own colour is what the artist looks for.
+    QOpenGLExtraFunctions& gl = context.gl;
+    const bool overWater = bubblesThroughWater_ && showWater_;
+    if (overWater) {
+        gl.glEnable(GL_STENCIL_TEST);
+        gl.glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE); // on depth pass, write the reference
+        gl.glStencilFunc(GL_ALWAYS, 1, 0xFF);
+    }
+    bubbleDrawable_.draw(context);
+    if (overWater)
+        gl.glStencilFunc(GL_ALWAYS, 0, 0xFF);
+    if (hasScene_)
+        bodyDrawable_.draw(context);
+    if (overWater) {
+        gl.glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+        gl.glStencilFunc(GL_NOTEQUAL, 1, 0xFF);
+    }
+    if (showWater_)
+        particles_.draw(context);
+    gl.glDisable(GL_STENCIL_TEST);
 }
 
 void ViewportWidget::paintLegend() {

@@ -1,10 +1,10 @@
 #pragma once
 // The editor's 3D view: the scene's gizmos and rigid bodies over a ground grid in edit mode, the
-// water and the bodies of a cached frame in playback. Navigation is a turntable camera (left-drag
-// orbit, middle- or shift-drag pan, wheel zoom towards the cursor, F or a double-click on empty
-// space frames everything); a click without drag picks the gizmo under the cursor and reports it
-// with itemPicked(). The widget never selects by itself: whoever owns the selection answers with
-// setSelection().
+// water, the air bubbles and the bodies of a cached frame in playback. Navigation is a turntable
+// camera (left-drag orbit, middle- or shift-drag pan, wheel zoom towards the cursor, F or a
+// double-click on empty space frames everything); a click without drag picks the gizmo under the
+// cursor and reports it with itemPicked(). The widget never selects by itself: whoever owns the
+// selection answers with setSelection().
 #include "cache/FrameFile.h"
 #include "document/SceneItem.h"
 #include "scene/Scene.h"
@@ -30,6 +30,8 @@
 #include <optional>
 
 namespace airtrap {
+
+struct RenderContext;
 
 class ViewportWidget : public QOpenGLWidget {
     Q_OBJECT
@@ -66,6 +68,10 @@ public:
     const SceneBodies& bodies() const { return bodies_; }
     //! The gizmo or body under `position` (widget pixels), as a click there would pick it.
     SceneItem itemAt(const QPointF& position) const;
+    //! Whether playback draws the water particles.
+    bool showsWater() const { return showWater_; }
+    //! Whether bubbles stay visible behind water (they are still hidden behind bodies).
+    bool drawsBubblesThroughWater() const { return bubblesThroughWater_; }
 
 public Q_SLOTS:
     //! Copies what the view draws from `scene` and redraws. The first scene also frames the view.
@@ -83,6 +89,12 @@ public Q_SLOTS:
     void setShowAxes(bool show);
     //! Shows or hides the gizmo boxes; hidden gizmos cannot be picked either.
     void setShowGizmos(bool show);
+    //! Shows or hides the water particles of the shown frame (and their speed legend), so that
+    //! what the water surrounds can be seen.
+    void setShowWater(bool show);
+    //! On, bubbles are drawn over any water in front of them, as if the water were clear, but
+    //! still hidden by bodies in front; off, water in front hides them like any solid.
+    void setBubblesThroughWater(bool through);
     //! Draws particles with this radius (metres) instead of the default, half the scene's spacing.
     void setParticleRadius(float metres);
     //! Fixes the speed drawn white (m/s); 0 follows each frame's fastest particle. By default it is
@@ -105,14 +117,16 @@ protected:
     void keyPressEvent(QKeyEvent* event) override;
 
 private:
-    //! Everything drawn in 3D, in drawing order: opaque water, bubbles and bodies first, lines
-    //! over them.
+    //! Everything drawn in 3D: opaque bubbles, bodies and water first, lines over them.
     std::array<Drawable*, 6> drawables();
     //! Puts the bodies where the shown frame has them (or at their scene poses) for drawing.
     void placeBodies();
     //! Frees every GL object while the context is current (before it goes away).
     void releaseGl();
     void drawScene();
+    //! The bubbles, the bodies and the water, each depth-tested; see the definition for how
+    //! bubbles show through the water.
+    void drawSolids(const RenderContext& context);
     void paintLegend();
     float aspectRatio() const;
     void updateParticleLook();
@@ -144,6 +158,8 @@ private:
     bool showGrid_ = true;
     bool showAxes_ = true;
     bool showGizmos_ = true;
+    bool showWater_ = true;
+    bool bubblesThroughWater_ = true;
     //! Until the user navigates, a resize refits the view (the first fit may predate the layout).
     bool refitOnResize_ = false;
     //! Fires once the camera has rested a moment: the full frame is drawn again.
