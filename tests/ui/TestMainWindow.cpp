@@ -1,8 +1,9 @@
 // The editor's main window comes up with its menus and a working OpenGL 3.3 core viewport.
 // Runs under a real (virtual) X server: QOpenGLWidget crashes on the offscreen platform.
 #include "document/SceneDocument.h"
-#include "window/MainWindow.h"
 #include "viewport/ViewportWidget.h"
+#include "window/EditorActions.h"
+#include "window/MainWindow.h"
 
 #include <QAction>
 #include <QMenu>
@@ -84,6 +85,40 @@ private Q_SLOTS:
         }
         MainWindow window;
         QCOMPARE(window.size(), size);
+    }
+
+    void viewMenuTogglesTheWaterAndBubblesThroughItAndRemembersThem() {
+        {
+            MainWindow window;
+            const EditorActions& actions = window.actions();
+            QAction* water = actions.showWater;
+            QAction* through = actions.bubblesThroughWater;
+            for (QAction* action : {water, through}) {
+                QVERIFY(window.viewMenu()->actions().contains(action));
+                QVERIFY(action->isCheckable());
+                QVERIFY(action->isChecked());
+            }
+            QCOMPARE(water->shortcut(), QKeySequence(Qt::Key_W));
+            ViewportWidget* viewport = window.viewport();
+            QVERIFY(viewport->showsWater());
+            QVERIFY(viewport->drawsBubblesThroughWater());
+
+            water->trigger();
+            QVERIFY(!viewport->showsWater());
+            QVERIFY(viewport->drawsBubblesThroughWater());
+            through->trigger();
+            QVERIFY(!viewport->drawsBubblesThroughWater());
+        }
+        // A new window starts as the last one was left, without waiting for a quit.
+        MainWindow window;
+        QVERIFY(!window.actions().showWater->isChecked());
+        QVERIFY(!window.actions().bubblesThroughWater->isChecked());
+        QVERIFY(!window.viewport()->showsWater());
+        QVERIFY(!window.viewport()->drawsBubblesThroughWater());
+        window.actions().showWater->trigger();
+        window.actions().bubblesThroughWater->trigger();
+        QVERIFY(window.viewport()->showsWater());
+        QVERIFY(window.viewport()->drawsBubblesThroughWater());
     }
 
     void openSceneNamesItInTitleAndStatusBar() {

@@ -98,6 +98,16 @@ void EditorActions::makeViewActions() {
     showGizmos = checkable(make("showGizmosAction", tr("G&izmos"),
                                 tr("Show the container, fluid blocks and obstacles")),
                            true);
+    showWater = checkable(make("showWaterAction", tr("Show &Water"),
+                               tr("Draw the water of a cached frame; hide it to see what it "
+                                  "surrounds")),
+                          true);
+    showWater->setShortcut(QKeySequence(Qt::Key_W));
+    bubblesThroughWater =
+        checkable(make("bubblesThroughWaterAction", tr("&Bubbles Through Water"),
+                       tr("Draw air bubbles in front of the water around them; bodies still "
+                          "hide them")),
+                  true);
 }
 
 void EditorActions::makePlaybackActions() {

@@ -38,6 +38,8 @@ public:
     QAction* showGrid;
     QAction* showAxes;
     QAction* showGizmos;
+    QAction* showWater;
+    QAction* bubblesThroughWater;
     // Playback
     QAction* playPause;
     QAction* stepForward;

@@ -40,6 +40,18 @@ namespace {
 constexpr auto kGeometryKey = "mainWindow/geometry";
 constexpr auto kStateKey = "mainWindow/state";
 constexpr auto kSceneFilter = "Airtrap scenes (*.json);;All files (*)";
+constexpr auto kShowWaterKey = "view/showWater";
+constexpr auto kBubblesThroughWaterKey = "view/bubblesThroughWater";
+
+//! Checks `action` as it was last left (its own state the first time) and stores each change as
+//! it is made, not on quit, so the choice survives a crash too.
+void remember(QAction* action, const char* key) {
+    QSettings& settings = EditorSettings::store();
+    action->setChecked(settings.value(QLatin1String(key), action->isChecked()).toBool());
+    QObject::connect(action, &QAction::toggled, action, [key](bool checked) {
+        EditorSettings::store().setValue(QLatin1String(key), checked);
+    });
+}
 } // namespace
 
 MainWindow::MainWindow(QWidget* parent)
@@ -171,6 +183,8 @@ void MainWindow::createMenus() {
     viewMenu_->addActions(
         {actions_->frameAll, actions_->showGrid, actions_->showAxes, actions_->showGizmos});
     viewMenu_->addSeparator();
+    viewMenu_->addActions({actions_->showWater, actions_->bubblesThroughWater});
+    viewMenu_->addSeparator();
     for (QDockWidget* dock : findChildren<QDockWidget*>())
         viewMenu_->addAction(dock->toggleViewAction());
 
@@ -262,6 +276,13 @@ void MainWindow::connectActions() {
     connect(actions_->showGrid, &QAction::toggled, viewport_, &ViewportWidget::setShowGrid);
     connect(actions_->showAxes, &QAction::toggled, viewport_, &ViewportWidget::setShowAxes);
     connect(actions_->showGizmos, &QAction::toggled, viewport_, &ViewportWidget::setShowGizmos);
+    connect(actions_->showWater, &QAction::toggled, viewport_, &ViewportWidget::setShowWater);
+    connect(actions_->bubblesThroughWater, &QAction::toggled, viewport_,
+            &ViewportWidget::setBubblesThroughWater);
+    remember(actions_->showWater, kShowWaterKey);
+    remember(actions_->bubblesThroughWater, kBubblesThroughWaterKey);
+    viewport_->setShowWater(actions_->showWater->isChecked());
+    viewport_->setBubblesThroughWater(actions_->bubblesThroughWater->isChecked());
     connect(actions_->playPause, &QAction::triggered, this,
             [this] { timeline_->isPlaying() ? timeline_->pause() : timeline_->play(); });
     connect(actions_->stepForward, &QAction::triggered, timeline_, &TimelineWidget::stepForward);

@@ -49,6 +49,7 @@ public:
     StatusBarFields* statusFields() const { return statusFields_; }
     const EditorActions& actions() const { return *actions_; }
     QMenu* fileMenu() const { return fileMenu_; }
+    QMenu* viewMenu() const { return viewMenu_; }
     QAction* openSceneAction() const;
     QAction* quitAction() const;
 
