@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <tbb/parallel_for.h>
 
 namespace airtrap {
 namespace {
@@ -95,8 +96,10 @@ void BubbleDynamics::measureSurroundings(const std::vector<RigidBody>& bodies, s
                                          const PositionArrays& positions,
                                          const NeighborGrid& grid) {
     surroundings_.resize(bodyIds_.size());
-    for (std::size_t k = 0; k < bodyIds_.size(); ++k)
+    // Each bubble writes only its own entry: parallel, and the same bits on any thread count.
+    tbb::parallel_for(std::size_t(0), bodyIds_.size(), [&](std::size_t k) {
         surroundings_[k] = measureOne(bodies[first + k], radii_[k], fluid, positions, grid);
+    });
 }
 
 BubbleSurroundings BubbleDynamics::measureOne(const RigidBody& body, double radius,

@@ -119,6 +119,13 @@ Simulation::Advance Simulation::advanceFrame(Interrupter& interrupter, const Ste
 }
 
 StepReport Simulation::step(double maxTimeStep) {
+    // No frames are completed here, but the bubbles' per-frame creation limit still renews each
+    // time a frame's worth of time has passed.
+    const int frameUnderWay = static_cast<int>(std::floor(state_.time * scene_.frames.fps));
+    if (frameUnderWay != steppedFrame_) {
+        steppedFrame_ = frameUnderWay;
+        frameBubbles_ = {};
+    }
     const StepReport report = solver_->step(state_, maxTimeStep);
     afterStep(report, std::numeric_limits<double>::infinity());
     return report;

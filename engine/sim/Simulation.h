@@ -73,6 +73,7 @@ private:
     std::optional<BubbleDeletion> bubbleDeletion_;
     std::optional<BubbleSpawner> bubbleSpawner_;
     BubbleTally frameBubbles_; //!< created and deleted during the frame under way
+    int steppedFrame_ = -1;    //!< frame whose time step() last stepped in
 };
 
 } // namespace airtrap

@@ -143,7 +143,7 @@ int main(int argc, char** argv) {
     std::vector<double> couplingSizes = {50000};
     std::string bubblePath = std::string(AIRTRAP_SOURCE_DIR) + "/samples/pouring.json";
     std::vector<double> bubbleSizes = {50000};
-    double bubbleWarmup = 1.2;
+    double bubbleWarmup = 1.0;
     int steps = 50;
     int warmup = 5;
     int repeat = 3;
