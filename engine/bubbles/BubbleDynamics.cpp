@@ -92,8 +92,7 @@ double BubbleDynamics::riseSpeed(double radius) const {
 }
 
 void BubbleDynamics::measureSurroundings(const std::vector<RigidBody>& bodies, std::size_t first,
-                                         const ParticleSet& fluid,
-                                         const PositionArrays& positions,
+                                         const ParticleSet& fluid, const PositionArrays& positions,
                                          const NeighborGrid& grid) {
     surroundings_.resize(bodyIds_.size());
     // Each bubble writes only its own entry: parallel, and the same bits on any thread count.
@@ -111,41 +110,35 @@ BubbleSurroundings BubbleDynamics::measureOne(const RigidBody& body, double radi
     // support radius further out, beyond the layer the bubble carries.
     const double ambientFrom = support_;
     const double reach = radius + 2.0 * support_;
-    const Vec3i low = grid.cellCoordinates((centre - Vec3d::Constant(reach)).cast<float>());
-    const Vec3i high = grid.cellCoordinates((centre + Vec3d::Constant(reach)).cast<float>());
     const double touching = 1.5 * spacing_; // water rests a spacing from the boundary layer
     std::array<bool, 14> wet{};
     double weightSum = 0.0;
     Vec3d weightedVelocity = Vec3d::Zero();
     BubbleSurroundings result;
-    for (int k = low.z(); k <= high.z(); ++k)
-        for (int j = low.y(); j <= high.y(); ++j) {
-            // The cells of one row are consecutive, and so are their particles.
-            const std::uint32_t begin = grid.cellRange(grid.linearIndex(low.x(), j, k)).first;
-            const std::uint32_t last = grid.cellRange(grid.linearIndex(high.x(), j, k)).second;
-            for (std::uint32_t s = begin; s < last; ++s) {
-                const Vec3d offset = positions[s].cast<double>() - centre;
-                const double distance = offset.norm();
-                const double gap = distance - radius;
-                if (gap >= reach - radius || distance == 0.0)
-                    continue;
-                const Vec3d velocity = fluid.velocities[s].cast<double>();
-                if (gap >= ambientFrom) {
-                    weightSum += 1.0;
-                    weightedVelocity += velocity;
-                    continue;
-                }
-                if (gap >= touching)
-                    continue;
-                const Vec3d outward = offset / distance;
-                wet[nearestDirection(outward)] = true;
-                const Vec3d surfacePoint = centre + radius * outward;
-                const double approach = -(velocity - body.velocityAt(surfacePoint)).dot(outward);
-                result.impactSpeed = std::max(result.impactSpeed, approach);
+    grid.forEachRangeInBox(centre, reach, [&](std::uint32_t begin, std::uint32_t end) {
+        for (std::uint32_t s = begin; s < end; ++s) {
+            const Vec3d offset = positions[s].cast<double>() - centre;
+            const double distance = offset.norm();
+            const double gap = distance - radius;
+            if (gap >= reach - radius || distance == 0.0)
+                continue;
+            const Vec3d velocity = fluid.velocities[s].cast<double>();
+            if (gap >= ambientFrom) {
+                weightSum += 1.0;
+                weightedVelocity += velocity;
+                continue;
             }
+            if (gap >= touching)
+                continue;
+            const Vec3d outward = offset / distance;
+            wet[nearestDirection(outward)] = true;
+            const Vec3d surfacePoint = centre + radius * outward;
+            const double approach = -(velocity - body.velocityAt(surfacePoint)).dot(outward);
+            result.impactSpeed = std::max(result.impactSpeed, approach);
         }
-    result.waterVelocity = weightSum > 0.0 ? Vec3d(weightedVelocity / weightSum)
-                                           : body.linearVelocity();
+    });
+    result.waterVelocity =
+        weightSum > 0.0 ? Vec3d(weightedVelocity / weightSum) : body.linearVelocity();
     result.wettedShare = double(std::count(wet.begin(), wet.end(), true)) / double(wet.size());
     const Vec3d up = gravity_.squaredNorm() > 0.0 ? Vec3d(-gravity_.normalized()) : Vec3d::UnitY();
     result.floating = !wet[nearestDirection(up)];
@@ -164,7 +157,8 @@ void BubbleDynamics::applyForces(std::vector<RigidBody>& bodies, std::size_t fir
         const double stokesDrag = 6.0 * kPi * restDensity_ * settings_.kinematicViscosity * radius;
         const double rate = stokesDrag * body.inertia().inverseMass() + settings_.drag;
         // Implicit: v' = v + Δt·rate·(ū − v') stays between v and ū for any step.
-        Vec3d velocity = (state.linearVelocity + rate * dt * around.waterVelocity) / (1.0 + rate * dt);
+        Vec3d velocity =
+            (state.linearVelocity + rate * dt * around.waterVelocity) / (1.0 + rate * dt);
         if (steer && !around.floating) {
             const double target = around.waterVelocity.dot(up) + riseSpeed(radius);
             const double relax = dt / settings_.riseTime;

@@ -63,8 +63,8 @@ std::size_t BubbleSpawner::spawn(SimulationState& state, const Water& water,
 namespace {
 
 Vec3d cellCentre(const NeighborGrid& grid, int i, int j, int k) {
-    return (grid.origin() + (Vec3f(float(i), float(j), float(k)) + Vec3f::Constant(0.5f)) *
-                                grid.cellSize())
+    return (grid.origin() +
+            (Vec3f(float(i), float(j), float(k)) + Vec3f::Constant(0.5f)) * grid.cellSize())
         .cast<double>();
 }
 
@@ -101,7 +101,7 @@ void BubbleSpawner::markSolidCells(const NeighborGrid& grid, const SimulationSta
 
 template <class Inside>
 void BubbleSpawner::markAround(const NeighborGrid& grid, const Vec3d& centre, double reach,
-                              std::vector<std::uint8_t>& mask, Inside&& inside) const {
+                               std::vector<std::uint8_t>& mask, Inside&& inside) const {
     const Vec3i low = grid.cellCoordinates((centre - Vec3d::Constant(reach)).cast<float>());
     const Vec3i high = grid.cellCoordinates((centre + Vec3d::Constant(reach)).cast<float>());
     for (int k = low.z(); k <= high.z(); ++k)
@@ -111,10 +111,9 @@ void BubbleSpawner::markAround(const NeighborGrid& grid, const Vec3d& centre, do
                     mask[grid.linearIndex(i, j, k)] = 1;
 }
 
-std::vector<FittedBubble> BubbleSpawner::candidates(const std::vector<AirPocket>& pockets,
-                                                    const Water& water,
-                                                    const std::vector<const RigidBody*>& solids)
-    const {
+std::vector<FittedBubble>
+BubbleSpawner::candidates(const std::vector<AirPocket>& pockets, const Water& water,
+                          const std::vector<const RigidBody*>& solids) const {
     std::vector<FittedBubble> fitted;
     for (const AirPocket& pocket : pockets) {
         std::optional<FittedBubble> bubble = fitter_.fit(pocket, water.grid, water.positions);
@@ -138,22 +137,16 @@ std::vector<FittedBubble> BubbleSpawner::candidates(const std::vector<AirPocket>
 }
 
 Vec3d BubbleSpawner::surroundingVelocity(const FittedBubble& bubble, const Water& water) const {
-    const NeighborGrid& grid = water.grid;
-    const double reach = bubble.radius + grid.cellSize();
-    const Vec3i low = grid.cellCoordinates((bubble.centre - Vec3d::Constant(reach)).cast<float>());
-    const Vec3i high = grid.cellCoordinates((bubble.centre + Vec3d::Constant(reach)).cast<float>());
+    const double reach = bubble.radius + water.grid.cellSize();
     Vec3d sum = Vec3d::Zero();
     std::size_t count = 0;
-    for (int k = low.z(); k <= high.z(); ++k)
-        for (int j = low.y(); j <= high.y(); ++j) {
-            const std::uint32_t begin = grid.cellRange(grid.linearIndex(low.x(), j, k)).first;
-            const std::uint32_t end = grid.cellRange(grid.linearIndex(high.x(), j, k)).second;
-            for (std::uint32_t s = begin; s < end; ++s)
-                if ((water.positions[s].cast<double>() - bubble.centre).norm() < reach) {
-                    sum += water.particles.velocities[s].cast<double>();
-                    ++count;
-                }
-        }
+    water.grid.forEachRangeInBox(bubble.centre, reach, [&](std::uint32_t begin, std::uint32_t end) {
+        for (std::uint32_t s = begin; s < end; ++s)
+            if ((water.positions[s].cast<double>() - bubble.centre).norm() < reach) {
+                sum += water.particles.velocities[s].cast<double>();
+                ++count;
+            }
+    });
     return count > 0 ? Vec3d(sum / double(count)) : Vec3d::Zero();
 }
 

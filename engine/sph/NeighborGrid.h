@@ -47,6 +47,18 @@ public:
         }
     }
 
+    //! Calls visit(begin, end) for the ranges of sorted indices covering the cells of the box
+    //! centre ± reach (any reach, unlike forEachNeighborRange): one range per (y, z) row, since
+    //! the cells of a row and their points are consecutive.
+    template <class Visit>
+    void forEachRangeInBox(const Vec3d& centre, double reach, Visit&& visit) const {
+        const Vec3i low = cellCoordinates((centre - Vec3d::Constant(reach)).cast<float>());
+        const Vec3i high = cellCoordinates((centre + Vec3d::Constant(reach)).cast<float>());
+        for (int k = low.z(); k <= high.z(); ++k)
+            for (int j = low.y(); j <= high.y(); ++j)
+                visit(cellStart_[linearIndex(low.x(), j, k)],
+                      cellStart_[linearIndex(high.x(), j, k) + 1]);
+    }
     Vec3i cellCoordinates(const Vec3f& x) const {
         const Vec3f g = (x - origin_) * invCellSize_;
         return Vec3i(clampAxis(g.x(), 0), clampAxis(g.y(), 1), clampAxis(g.z(), 2));
