@@ -151,7 +151,8 @@ private Q_SLOTS:
         QTest::qWait(300);
         QCOMPARE(recording.progress.size(), progressWhenPaused);
         QCOMPARE(recording.frames.size(), framesWhenPaused);
-        QVERIFY(recording.frames.size() < 4);
+        // Paused before the end: how many frames came first depends on the machine's speed.
+        QVERIFY(recording.frames.size() < scene.frames.endFrame);
 
         controller.resume();
         QCOMPARE(controller.state(), State::Running);
