@@ -50,30 +50,41 @@ std::vector<AirPocket> AirPocketFinder::find(const NeighborGrid& grid,
 }
 
 void AirPocketFinder::classify(const NeighborGrid& grid, const std::vector<std::uint8_t>& solid) {
+    // Down each column from the open top: the air reached straight from above is atmosphere
+    // already. Most of the domain is such open sky, so the flood only has to visit the air under
+    // water or solids (one sequential pass here instead of a queue through every air cell).
     cells_.assign(grid.cellTotal(), Cell::Blocked);
     const Vec3i& dims = grid.dimensions();
-    for (int k = 1; k < dims.z() - 1; ++k)
-        for (int j = 1; j < dims.y() - 1; ++j)
+    for (int k = 1; k < dims.z() - 1; ++k) {
+        openToSky_.assign(static_cast<std::size_t>(dims.x()), 1);
+        for (int j = dims.y() - 2; j >= 1; --j)
             for (int i = 1; i < dims.x() - 1; ++i) {
                 const int cell = grid.linearIndex(i, j, k);
-                if (grid.cellCount(cell) == 0 && solid[cell] == 0)
-                    cells_[cell] = Cell::Air;
+                if (grid.cellCount(cell) != 0 || solid[cell] != 0) {
+                    openToSky_[i] = 0;
+                    continue;
+                }
+                cells_[cell] = openToSky_[i] ? Cell::Atmosphere : Cell::Air;
             }
+    }
 }
 
 void AirPocketFinder::floodAtmosphere(const NeighborGrid& grid) {
-    // The atmosphere enters through the open top: every air cell of the top inner layer.
-    const Vec3i& dims = grid.dimensions();
+    // The atmosphere spreads from the open sky sideways and upwards into the air under
+    // overhangs: the flood starts at the air cells beside it.
     queue_.clear();
-    const int top = dims.y() - 2;
-    for (int k = 1; k < dims.z() - 1; ++k)
-        for (int i = 1; i < dims.x() - 1; ++i) {
-            const int cell = grid.linearIndex(i, top, k);
-            if (cells_[cell] == Cell::Air) {
-                cells_[cell] = Cell::Atmosphere;
-                queue_.push_back(cell);
-            }
+    for (int cell = 0; cell < static_cast<int>(cells_.size()); ++cell) {
+        if (cells_[cell] != Cell::Air)
+            continue;
+        bool besideSky = false;
+        forEachFaceNeighbor(grid, cell, [&](int neighbour) {
+            besideSky = besideSky || cells_[neighbour] == Cell::Atmosphere;
+        });
+        if (besideSky) {
+            cells_[cell] = Cell::Atmosphere;
+            queue_.push_back(cell);
         }
+    }
     for (std::size_t next = 0; next < queue_.size(); ++next)
         forEachFaceNeighbor(grid, queue_[next], [&](int neighbour) {
             if (cells_[neighbour] == Cell::Air) {

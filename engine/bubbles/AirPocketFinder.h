@@ -3,8 +3,8 @@
 // a cell is air when it holds no water particle and is not inside a solid (a rigid body or an
 // existing bubble). A 6-connected flood fill from the air cells of the grid's top layer — the
 // open top of the domain — marks the atmosphere; the air cells it does not reach form connected
-// components, the pockets. Reuses the grid the step already built, so finding pockets costs one
-// pass over the cells.
+// components, the pockets. Reuses the grid the step already built; a sweep down the columns
+// settles the open sky, so finding pockets costs about one pass over the cells.
 #include "bubbles/AirPocket.h"
 #include "sph/NeighborGrid.h"
 
@@ -40,6 +40,7 @@ private:
     std::vector<Cell> cells_;
     std::vector<int> queue_;
     std::vector<std::uint8_t> solidScratch_;
+    std::vector<std::uint8_t> openToSky_; //!< per x in the current column sweep
 };
 
 } // namespace airtrap

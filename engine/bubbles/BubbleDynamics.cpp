@@ -10,6 +10,10 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
+float square(float x) {
+    return x * x;
+}
+
 //! Directions around a bubble whose water cover is judged apart: the 6 axes and 8 diagonals.
 const std::array<Vec3d, 14>& coverDirections() {
     static const std::array<Vec3d, 14> directions = [] {
@@ -107,42 +111,54 @@ BubbleSurroundings BubbleDynamics::measureOne(const RigidBody& body, double radi
                                               const NeighborGrid& grid) const {
     const Vec3d centre = body.position();
     // The water touching a bubble is dragged along with it; the ambient flow is read one
-    // support radius further out, beyond the layer the bubble carries.
-    const double ambientFrom = support_;
-    const double reach = radius + 2.0 * support_;
-    const double touching = 1.5 * spacing_; // water rests a spacing from the boundary layer
+    // support radius further out, beyond the layer the bubble carries. The shells are compared
+    // as squared distances from the centre: only the few touching particles need a square root.
+    const float outer2 = square(float(radius + 2.0 * support_));
+    const float ambient2 = square(float(radius + support_));
+    const float touching2 = square(float(radius + 1.5 * spacing_)); // water rests a spacing out
+    const Vec3f c = centre.cast<float>();
+    const float* px = positions.x.data();
+    const float* py = positions.y.data();
+    const float* pz = positions.z.data();
     std::array<bool, 14> wet{};
-    double weightSum = 0.0;
-    Vec3d weightedVelocity = Vec3d::Zero();
+    std::size_t ambientCount = 0;
+    Vec3d ambientSum = Vec3d::Zero();
     BubbleSurroundings result;
-    grid.forEachRangeInBox(centre, reach, [&](std::uint32_t begin, std::uint32_t end) {
-        for (std::uint32_t s = begin; s < end; ++s) {
-            const Vec3d offset = positions[s].cast<double>() - centre;
-            const double distance = offset.norm();
-            const double gap = distance - radius;
-            if (gap >= reach - radius || distance == 0.0)
-                continue;
-            const Vec3d velocity = fluid.velocities[s].cast<double>();
-            if (gap >= ambientFrom) {
-                weightSum += 1.0;
-                weightedVelocity += velocity;
-                continue;
+    grid.forEachRangeInBall(
+        centre, radius + 2.0 * support_, [&](std::uint32_t begin, std::uint32_t end) {
+            // Branch-free over the shell, which holds about half of the candidates in no
+            // predictable order; touching water is rare and takes the branch.
+            Vec3f rowSum = Vec3f::Zero();
+            float rowCount = 0.0f;
+            for (std::uint32_t s = begin; s < end; ++s) {
+                const float d2 =
+                    square(px[s] - c.x()) + square(py[s] - c.y()) + square(pz[s] - c.z());
+                const float inShell = (d2 >= ambient2) & (d2 < outer2) ? 1.0f : 0.0f;
+                rowSum += inShell * fluid.velocities[s];
+                rowCount += inShell;
+                if (d2 < touching2 && d2 > 0.0f)
+                    result.impactSpeed =
+                        std::max(result.impactSpeed, touchingWater(body, radius, positions[s],
+                                                                   fluid.velocities[s], wet));
             }
-            if (gap >= touching)
-                continue;
-            const Vec3d outward = offset / distance;
-            wet[nearestDirection(outward)] = true;
-            const Vec3d surfacePoint = centre + radius * outward;
-            const double approach = -(velocity - body.velocityAt(surfacePoint)).dot(outward);
-            result.impactSpeed = std::max(result.impactSpeed, approach);
-        }
-    });
+            ambientSum += rowSum.cast<double>();
+            ambientCount += static_cast<std::size_t>(rowCount);
+        });
     result.waterVelocity =
-        weightSum > 0.0 ? Vec3d(weightedVelocity / weightSum) : body.linearVelocity();
+        ambientCount > 0 ? Vec3d(ambientSum / double(ambientCount)) : body.linearVelocity();
     result.wettedShare = double(std::count(wet.begin(), wet.end(), true)) / double(wet.size());
     const Vec3d up = gravity_.squaredNorm() > 0.0 ? Vec3d(-gravity_.normalized()) : Vec3d::UnitY();
     result.floating = !wet[nearestDirection(up)];
     return result;
+}
+
+double BubbleDynamics::touchingWater(const RigidBody& body, double radius, const Vec3f& position,
+                                     const Vec3f& velocity, std::array<bool, 14>& wet) const {
+    const Vec3d offset = position.cast<double>() - body.position();
+    const Vec3d outward = offset.normalized();
+    wet[nearestDirection(outward)] = true;
+    const Vec3d surfacePoint = body.position() + radius * outward;
+    return -(velocity.cast<double>() - body.velocityAt(surfacePoint)).dot(outward);
 }
 
 void BubbleDynamics::applyForces(std::vector<RigidBody>& bodies, std::size_t first,

@@ -21,6 +21,7 @@
 #include "sph/NeighborSweep.h"
 #include "sph/ParticleSet.h"
 
+#include <array>
 #include <vector>
 
 namespace airtrap {
@@ -56,6 +57,10 @@ private:
     bool sameBubbles(const std::vector<BubbleState>& bubbles) const;
     BubbleSurroundings measureOne(const RigidBody& body, double radius, const ParticleSet& fluid,
                                   const PositionArrays& positions, const NeighborGrid& grid) const;
+    //! Marks the cover direction of a water particle touching the bubble and returns how fast it
+    //! approaches the bubble's surface.
+    double touchingWater(const RigidBody& body, double radius, const Vec3f& position,
+                         const Vec3f& velocity, std::array<bool, 14>& wet) const;
 
     BubbleSettings settings_;
     double restDensity_;

@@ -140,13 +140,14 @@ Vec3d BubbleSpawner::surroundingVelocity(const FittedBubble& bubble, const Water
     const double reach = bubble.radius + water.grid.cellSize();
     Vec3d sum = Vec3d::Zero();
     std::size_t count = 0;
-    water.grid.forEachRangeInBox(bubble.centre, reach, [&](std::uint32_t begin, std::uint32_t end) {
-        for (std::uint32_t s = begin; s < end; ++s)
-            if ((water.positions[s].cast<double>() - bubble.centre).norm() < reach) {
-                sum += water.particles.velocities[s].cast<double>();
-                ++count;
-            }
-    });
+    water.grid.forEachRangeInBall(
+        bubble.centre, reach, [&](std::uint32_t begin, std::uint32_t end) {
+            for (std::uint32_t s = begin; s < end; ++s)
+                if ((water.positions[s].cast<double>() - bubble.centre).norm() < reach) {
+                    sum += water.particles.velocities[s].cast<double>();
+                    ++count;
+                }
+        });
     return count > 0 ? Vec3d(sum / double(count)) : Vec3d::Zero();
 }
 

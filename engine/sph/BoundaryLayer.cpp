@@ -1,9 +1,12 @@
 #include "sph/BoundaryLayer.h"
 
+#include <limits>
+
 namespace airtrap {
 
 BoundaryLayer::BoundaryLayer(const Aabb& gridDomain, float cellSize, float restDensity)
-    : restDensity_(restDensity), grid_(gridDomain, cellSize) {}
+    : restDensity_(restDensity), latticeDomain_(gridDomain), cellSize_(cellSize),
+      grid_(gridDomain, cellSize) {}
 
 void BoundaryLayer::rebuild(const std::vector<RigidBody>& bodies,
                             const std::vector<std::uint32_t>& members) {
@@ -20,6 +23,7 @@ void BoundaryLayer::rebuild(const std::vector<RigidBody>& bodies,
         placeBody(bodies[index], index, first);
         first += bodies[index].boundary().size();
     }
+    grid_.reshape(window());
     grid_.build(unsortedPositions_);
     const auto& order = grid_.order();
     const std::size_t n = order.size();
@@ -37,6 +41,28 @@ void BoundaryLayer::rebuild(const std::vector<RigidBody>& bodies,
         bodyOf_[s] = unsortedBodyOf_[from];
     }
     markReach();
+}
+
+Aabb BoundaryLayer::window() const {
+    Aabb bounds{Vec3d::Constant(std::numeric_limits<double>::max()),
+                Vec3d::Constant(std::numeric_limits<double>::lowest())};
+    for (const Vec3f& x : unsortedPositions_) {
+        if (!x.allFinite()) // a blown-up body: build() drops the point, the guard reports it
+            continue;
+        bounds.min = bounds.min.cwiseMin(x.cast<double>());
+        bounds.max = bounds.max.cwiseMax(x.cast<double>());
+    }
+    const Vec3d latticeMin = latticeDomain_.min; // a cell corner of the water's grid
+    if (!(bounds.min.array() <= bounds.max.array()).all())
+        return {latticeMin, latticeMin + Vec3d::Constant(cellSize_)};
+    // Snapped outwards to whole cells, so the layer's cells are the water grid's cells and its
+    // particles sort in the same order as on a grid over the whole domain.
+    const auto snap = [&](const Vec3d& x, double cells) {
+        const Vec3d index = ((x - latticeMin) / cellSize_).array().floor() + cells;
+        return Vec3d(latticeMin + index * cellSize_);
+    };
+    return {snap(bounds.min, -1.0).cwiseMax(latticeDomain_.min).cwiseMin(latticeDomain_.max),
+            snap(bounds.max, 2.0).cwiseMin(latticeDomain_.max).cwiseMax(latticeDomain_.min)};
 }
 
 void BoundaryLayer::markReach() {

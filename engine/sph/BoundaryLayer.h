@@ -1,6 +1,8 @@
 #pragma once
 // The boundary particles of a group of rigid bodies in world space, sorted on their own
-// neighbour grid (same cell layout as the water's). Each carries Ψ_b = ρ₀ V_b, the mass it stands
+// neighbour grid: the water's cell lattice, cut down to the cells around the particles. A few
+// bubbles or a body then cost a grid of their own size, not the domain's, when the moving layer is
+// re-sorted every step. Each carries Ψ_b = ρ₀ V_b, the mass it stands
 // in for in the water's density rate and pressure force (Akinci et al. 2012), its normal for the
 // contact impulse (paper eq. 4), its velocity and the index of its body.
 #include "rigid/RigidBody.h"
@@ -31,6 +33,8 @@ public:
     //! particle at x skips the layer's neighbour sweep (most of the water is far from the walls
     //! and from any moving body).
     bool reaches(const Vec3f& x) const {
+        if (!grid_.contains(x))
+            return false;
         const Vec3i c = grid_.cellCoordinates(x);
         return nearCells_[grid_.linearIndex(c.x(), c.y(), c.z())] != 0;
     }
@@ -39,10 +43,15 @@ public:
 private:
     //! Writes the world-space data of `body`'s particles into the unsorted arrays from `first`.
     void placeBody(const RigidBody& body, std::uint32_t index, std::size_t first);
+    //! The cells of the water's lattice from one cell below the particles to one above, within
+    //! the lattice's domain: every point within a cell of a particle lies inside.
+    Aabb window() const;
     //! Marks the cells whose 27-cell neighbourhood holds a particle.
     void markReach();
 
     float restDensity_;
+    Aabb latticeDomain_; //!< the water grid's domain, whose cells the layer's grid reuses
+    float cellSize_;
     NeighborGrid grid_;
     std::vector<Vec3f> positions_;
     std::vector<Vec3f> normals_;

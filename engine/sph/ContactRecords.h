@@ -11,7 +11,7 @@ namespace airtrap {
 
 struct ContactRecords {
     std::vector<std::int32_t> boundaryParticle;
-    std::vector<Vec3f> impulse; //!< N·s, on the water particle
+    std::vector<Vec3f> impulse; //!< N·s, on the water particle; stale where there is no contact
 
     void resize(std::size_t n) {
         boundaryParticle.resize(n);

@@ -146,8 +146,7 @@ Vec3f InteractionPass::boundaryForce(std::size_t i, const InteractionInputs& in,
                     const float r2 = d.squaredNorm();
                     if (r2 >= radius2_)
                         continue;
-                    force +=
-                        boundaryPairAcceleration(xi, vi, rhoi, pressureTerm, b, d, r2, *layer);
+                    force += boundaryPairAcceleration(xi, vi, rhoi, pressureTerm, b, d, r2, *layer);
                     if (r2 < contact.distance2) {
                         contact.distance2 = r2;
                         contact.layer = layer;
@@ -213,7 +212,9 @@ void InteractionPass::recordContact(std::size_t i, const Contact& contact, const
         impulse != Vec3f::Zero();
     contacts.boundaryParticle[i] =
         onDynamicBody ? static_cast<std::int32_t>(contact.boundaryParticle) : -1;
-    contacts.impulse[i] = onDynamicBody ? impulse : Vec3f::Zero();
+    // Read only where a boundary particle is recorded: most of the water skips the write.
+    if (onDynamicBody)
+        contacts.impulse[i] = impulse;
 }
 
 void InteractionPass::bodyReactions(const InteractionInputs& in,

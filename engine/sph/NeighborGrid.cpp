@@ -1,5 +1,6 @@
 #include "sph/NeighborGrid.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <tbb/parallel_for.h>
@@ -11,19 +12,26 @@ constexpr std::uint32_t kOutside = std::numeric_limits<std::uint32_t>::max();
 }
 
 NeighborGrid::NeighborGrid(const Aabb& domain, float cellSize)
-    : domain_(domain), cellSize_(cellSize), invCellSize_(1.0f / cellSize) {
-    origin_ = domain.min.cast<float>() - Vec3f::Constant(cellSize);
-    for (int axis = 0; axis < 3; ++axis) {
-        const double cells = std::ceil(domain.size()[axis] / cellSize);
-        dims_[axis] = static_cast<int>(cells) + 2;
-    }
-    cellStart_.assign(static_cast<std::size_t>(dims_.prod()) + 1, 0);
+    : cellSize_(cellSize), invCellSize_(1.0f / cellSize) {
+    reshape(domain);
 }
 
-bool NeighborGrid::insideDomain(const Vec3f& x) const {
-    // NaN compares false, so a NaN position counts as outside and is caught by the caller.
-    return x.x() >= domain_.min.x() && x.x() <= domain_.max.x() && x.y() >= domain_.min.y() &&
-           x.y() <= domain_.max.y() && x.z() >= domain_.min.z() && x.z() <= domain_.max.z();
+void NeighborGrid::reshape(const Aabb& domain) {
+    // Rounded outwards, so a point inside the double-precision domain is inside these bounds.
+    lower_ = domain.min.cast<float>();
+    upper_ = domain.max.cast<float>();
+    for (int axis = 0; axis < 3; ++axis) {
+        if (double(lower_[axis]) > domain.min[axis])
+            lower_[axis] = std::nextafter(lower_[axis], -std::numeric_limits<float>::infinity());
+        if (double(upper_[axis]) < domain.max[axis])
+            upper_[axis] = std::nextafter(upper_[axis], std::numeric_limits<float>::infinity());
+    }
+    origin_ = domain.min.cast<float>() - Vec3f::Constant(cellSize_);
+    for (int axis = 0; axis < 3; ++axis) {
+        const double cells = std::ceil(domain.size()[axis] / cellSize_);
+        dims_[axis] = static_cast<int>(std::max(cells, 1.0)) + 2;
+    }
+    cellStart_.assign(static_cast<std::size_t>(dims_.prod()) + 1, 0);
 }
 
 void NeighborGrid::build(const std::vector<Vec3f>& positions) {
@@ -32,7 +40,7 @@ void NeighborGrid::build(const std::vector<Vec3f>& positions) {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096), [&](const auto& range) {
         for (std::size_t p = range.begin(); p != range.end(); ++p) {
             const Vec3f& x = positions[p];
-            if (!insideDomain(x)) {
+            if (!contains(x)) {
                 cellOfPoint_[p] = kOutside;
                 continue;
             }

@@ -8,6 +8,8 @@
 // on the input order.
 #include "core/Math.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -17,6 +19,15 @@ namespace airtrap {
 class NeighborGrid {
 public:
     NeighborGrid(const Aabb& domain, float cellSize);
+
+    //! Moves the grid onto `domain`, keeping the cell size and the allocations. Cheap when the
+    //! domain is small, which is why a group of a few moving bodies fits its grid to them.
+    void reshape(const Aabb& domain);
+    //! Whether x lies in the domain (points outside it are dropped by build()). NaN is outside.
+    bool contains(const Vec3f& x) const {
+        return x.x() >= lower_.x() && x.x() <= upper_.x() && x.y() >= lower_.y() &&
+               x.y() <= upper_.y() && x.z() >= lower_.z() && x.z() <= upper_.z();
+    }
 
     //! Sorts the points by cell. Afterwards `order()[k]` is the input index of the k-th sorted
     //! point; points outside the domain are dropped and counted in `outsideCount()`.
@@ -47,17 +58,28 @@ public:
         }
     }
 
-    //! Calls visit(begin, end) for the ranges of sorted indices covering the cells of the box
-    //! centre ± reach (any reach, unlike forEachNeighborRange): one range per (y, z) row, since
-    //! the cells of a row and their points are consecutive.
+    //! Calls visit(begin, end) for ranges of sorted indices that cover every point within
+    //! `radius` of `centre` (any radius, unlike forEachNeighborRange): one range per (y, z) row of
+    //! cells that the ball reaches, trimmed to the cells under the ball's chord along x.
     template <class Visit>
-    void forEachRangeInBox(const Vec3d& centre, double reach, Visit&& visit) const {
-        const Vec3i low = cellCoordinates((centre - Vec3d::Constant(reach)).cast<float>());
-        const Vec3i high = cellCoordinates((centre + Vec3d::Constant(reach)).cast<float>());
-        for (int k = low.z(); k <= high.z(); ++k)
-            for (int j = low.y(); j <= high.y(); ++j)
-                visit(cellStart_[linearIndex(low.x(), j, k)],
-                      cellStart_[linearIndex(high.x(), j, k) + 1]);
+    void forEachRangeInBall(const Vec3d& centre, double radius, Visit&& visit) const {
+        const double radius2 = radius * radius;
+        const int lowZ = cellIndex(centre.z() - radius, 2);
+        const int highZ = cellIndex(centre.z() + radius, 2);
+        const int lowY = cellIndex(centre.y() - radius, 1);
+        const int highY = cellIndex(centre.y() + radius, 1);
+        for (int k = lowZ; k <= highZ; ++k) {
+            const double gapZ = gapToCell(centre.z(), k, 2);
+            for (int j = lowY; j <= highY; ++j) {
+                const double gapY = gapToCell(centre.y(), j, 1);
+                const double chord2 = radius2 - gapY * gapY - gapZ * gapZ;
+                if (chord2 < 0.0)
+                    continue;
+                const double halfChord = std::sqrt(chord2);
+                visit(cellStart_[linearIndex(cellIndex(centre.x() - halfChord, 0), j, k)],
+                      cellStart_[linearIndex(cellIndex(centre.x() + halfChord, 0), j, k) + 1]);
+            }
+        }
     }
     Vec3i cellCoordinates(const Vec3f& x) const {
         const Vec3f g = (x - origin_) * invCellSize_;
@@ -87,13 +109,22 @@ private:
     float rowGap(float local, int d) const {
         return d < 0 ? local : (d > 0 ? cellSize_ - local : 0.0f);
     }
+    //! The inner cell holding coordinate `x` along `axis`.
+    int cellIndex(double x, int axis) const {
+        return clampAxis(static_cast<float>((x - origin_[axis]) * invCellSize_), axis);
+    }
+    //! Distance along `axis` from coordinate `x` to cell `index`'s slab (0 inside it).
+    double gapToCell(double x, int index, int axis) const {
+        const double low = origin_[axis] + double(index) * cellSize_;
+        return x < low ? low - x : std::max(0.0, x - (low + cellSize_));
+    }
     int clampAxis(float g, int axis) const {
         const int i = static_cast<int>(g);
         return i < 1 ? 1 : (i > dims_[axis] - 2 ? dims_[axis] - 2 : i);
     }
-    bool insideDomain(const Vec3f& x) const;
 
-    Aabb domain_;
+    Vec3f lower_; //!< the domain's corners, in the points' precision
+    Vec3f upper_;
     float cellSize_;
     float invCellSize_;
     Vec3f origin_;

@@ -2,15 +2,14 @@
 // support radius = 2 × spacing (SPlisHSPlasH's default, so figures compare), on 1 and 2 threads,
 // for a fixed number of steps, the median of --repeat runs. Then the cost of two-way coupling:
 // samples/diving_bunny.json with the bunny plunging into the pool against the same pool without
-// it. Then the cost of the trapped air bubbles: samples/pouring.json, baked with bubbles until the
-// jet has trapped air, measured from that state with bubbles on and off (the same water, without
-// the bubbles' bodies, pocket searches and rules). Prints particle-updates per second, neighbours
+// it. Then the cost of the trapped air bubbles on samples/pouring.json, twice: as the paper
+// measured it, a whole bake with bubbles against one without; and per step from the moment the jet
+// has trapped the most air, with bubbles on and off (the same water, without the bubbles' bodies,
+// pocket searches and rules). Prints particle-updates per second, neighbours
 // per particle, ms per phase and bytes per particle, as a table or (--json) as one JSON array.
 #include "BenchmarkCase.h"
-#include "core/ThreadLimit.h"
+#include "BubbleBakeComparison.h"
 #include "scene/SceneJson.h"
-#include "sim/Simulation.h"
-#include "sph/WcsphSolver.h"
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -18,6 +17,7 @@
 #include <cstdio>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 #include <vector>
 
 using namespace airtrap;
@@ -51,21 +51,43 @@ Scene divingBunnyWith(const Scene& sample, double particles, bool withBunny) {
     return scene;
 }
 
-//! The pouring sample at about `particles` (its pool's), baked with bubbles for `seconds` of
-//! simulated time on all threads: the state the bubble cases start from.
-std::pair<Scene, SimulationState> pouringAfter(const Scene& sample, double particles,
-                                               double seconds) {
+//! The pouring sample at about `particles` (its pool's), with bubbles.
+Scene pouringWith(const Scene& sample, double particles) {
     Scene scene = damBreakWith(sample, particles);
     scene.bubbles.enabled = true;
     // The jet's layers and budget scale with the spacing: keep the poured volume.
     const double scale = std::pow(sample.solver.particleSpacing / scene.solver.particleSpacing, 3);
     for (InflowEmitterSettings& emitter : scene.emitters)
         emitter.maxParticles = int(std::lround(emitter.maxParticles * scale));
-    ThreadLimit all(0);
-    Simulation simulation(scene);
-    while (simulation.state().time < seconds)
-        simulation.step(1.0e9);
-    return {scene, simulation.state()};
+    return scene;
+}
+
+void printBakeComparison(const std::string& name, const BubbleBakeResult& bake) {
+    std::printf("%s, whole bake of %d frames (%d thr, %zu particles at the end): %.1f s with "
+                "bubbles (%llu steps, %.3f ms/step) vs %.1f s without (%llu steps, %.3f ms/step), "
+                "overhead %+.2f %%; bubble phases %.2f %% of the bake; %zu bubbles created, at "
+                "most %zu alive\n",
+                name.c_str(), bake.frames, bake.threads, bake.particles, bake.secondsOn,
+                static_cast<unsigned long long>(bake.stepsOn), bake.msPerStepOn(), bake.secondsOff,
+                static_cast<unsigned long long>(bake.stepsOff), bake.msPerStepOff(),
+                bake.overheadPercent(), 100.0 * bake.bubblePhaseSeconds / bake.secondsOn,
+                bake.bubblesCreated, bake.mostBubblesAlive);
+    std::fflush(stdout);
+}
+
+nlohmann::json toJson(const std::string& name, const BubbleBakeResult& bake) {
+    return {{"scene", name},
+            {"frames", bake.frames},
+            {"threads", bake.threads},
+            {"particles", bake.particles},
+            {"seconds_with_bubbles", bake.secondsOn},
+            {"seconds_without_bubbles", bake.secondsOff},
+            {"steps_with_bubbles", bake.stepsOn},
+            {"steps_without_bubbles", bake.stepsOff},
+            {"bubble_overhead_percent", bake.overheadPercent()},
+            {"bubble_phase_percent", 100.0 * bake.bubblePhaseSeconds / bake.secondsOn},
+            {"bubbles_created", bake.bubblesCreated},
+            {"most_bubbles_alive", bake.mostBubblesAlive}};
 }
 
 //! The same water without bubbles: the baseline the overhead is measured against.
@@ -75,16 +97,34 @@ std::pair<Scene, SimulationState> withoutBubbles(std::pair<Scene, SimulationStat
     return run;
 }
 
-void printBubbleOverhead(const BenchmarkResult& off, const BenchmarkResult& on) {
-    const auto perStep = [](const BenchmarkResult& r) { return 1000.0 * r.wallSeconds / r.steps; };
-    const auto phase = [&](const char* name) { return on.phaseMilliseconds.at(name); };
-    std::printf("  bubbles (%zu alive, %d thr): %.3f vs %.3f ms/step, overhead %+.2f %%; per step "
-                "pockets %.4f ms, forces %.4f ms, deletion %.4f ms, bodies %.4f vs %.4f ms\n",
-                on.bubbles, on.threads, perStep(on), perStep(off),
-                100.0 * (perStep(on) / perStep(off) - 1.0), phase("bubble_pockets"),
-                phase("bubble_forces"), phase("bubble_deletion"), phase("bodies"),
-                off.phaseMilliseconds.at("bodies"));
+double msPerStep(const BenchmarkResult& r) {
+    return 1000.0 * r.wallSeconds / r.steps;
+}
+
+//! The bubble cases of one thread count: each off run followed by its on run, so a slow spell of
+//! the machine falls on both sides of a pair; the overhead is the median over the pairs.
+struct BubbleComparison {
+    BenchmarkResult off;
+    BenchmarkResult on;
+    double overheadPercent = 0.0;
+};
+
+void printBubbleOverhead(const BubbleComparison& pair) {
+    const auto phase = [&](const char* name) { return pair.on.phaseMilliseconds.at(name); };
+    std::printf("  bubbles (%zu alive, %d thr): %.3f vs %.3f ms/step, overhead %+.2f %% (median "
+                "of paired runs); per step pockets %.4f ms, forces %.4f ms, deletion %.4f ms, "
+                "bodies %.4f vs %.4f ms\n",
+                pair.on.bubbles, pair.on.threads, msPerStep(pair.on), msPerStep(pair.off),
+                pair.overheadPercent, phase("bubble_pockets"), phase("bubble_forces"),
+                phase("bubble_deletion"), phase("bodies"), pair.off.phaseMilliseconds.at("bodies"));
     std::fflush(stdout);
+}
+
+BenchmarkResult median(std::vector<BenchmarkResult> runs) {
+    std::sort(runs.begin(), runs.end(), [](const auto& a, const auto& b) {
+        return a.particleUpdatesPerSecond < b.particleUpdatesPerSecond;
+    });
+    return runs[runs.size() / 2];
 }
 
 //! Shared machines are noisy: the median of several runs is the figure that repeats.
@@ -93,10 +133,20 @@ BenchmarkResult medianRun(const BenchmarkCase& benchmark, int threads, int steps
     std::vector<BenchmarkResult> runs;
     for (int r = 0; r < repeat; ++r)
         runs.push_back(benchmark.run(threads, steps, warmup));
-    std::sort(runs.begin(), runs.end(), [](const auto& a, const auto& b) {
-        return a.particleUpdatesPerSecond < b.particleUpdatesPerSecond;
-    });
-    return runs[runs.size() / 2];
+    return median(std::move(runs));
+}
+
+BubbleComparison comparePaired(const BenchmarkCase& off, const BenchmarkCase& on, int threads,
+                               int steps, int warmup, int repeat) {
+    std::vector<BenchmarkResult> offRuns, onRuns;
+    std::vector<double> overheads;
+    for (int r = 0; r < repeat; ++r) {
+        offRuns.push_back(off.run(threads, steps, warmup));
+        onRuns.push_back(on.run(threads, steps, warmup));
+        overheads.push_back(100.0 * (msPerStep(onRuns.back()) / msPerStep(offRuns.back()) - 1.0));
+    }
+    std::sort(overheads.begin(), overheads.end());
+    return {median(offRuns), median(onRuns), overheads[overheads.size() / 2]};
 }
 
 nlohmann::json toJson(const BenchmarkResult& r) {
@@ -111,7 +161,7 @@ nlohmann::json toJson(const BenchmarkResult& r) {
             {"neighbors_per_particle", r.neighborsPerParticle},
             {"bytes_per_particle", r.bytesPerParticle},
             {"engine_bytes_per_particle", r.engineBytesPerParticle},
-            {"ms_per_step", 1000.0 * r.wallSeconds / r.steps},
+            {"ms_per_step", msPerStep(r)},
             {"bubbles", r.bubbles},
             {"phase_ms", phases}};
 }
@@ -126,9 +176,8 @@ void printTableRow(const BenchmarkResult& r) {
     const auto phase = [&](const char* name) { return r.phaseMilliseconds.at(name); };
     std::printf("%-18s %9zu %3d %6d %10.3f %7.1f %9.0f %8.2f %8.2f %8.2f %8.2f %8.2f %8.2f\n",
                 r.scene.c_str(), r.particles, r.threads, r.steps, r.particleUpdatesPerSecond / 1e6,
-                r.neighborsPerParticle, r.bytesPerParticle, 1000.0 * r.wallSeconds / r.steps,
-                phase("neighbours"), phase("density"), phase("forces"), phase("bodies"),
-                phase("integrate"));
+                r.neighborsPerParticle, r.bytesPerParticle, msPerStep(r), phase("neighbours"),
+                phase("density"), phase("forces"), phase("bodies"), phase("integrate"));
     std::fflush(stdout);
 }
 
@@ -144,6 +193,7 @@ int main(int argc, char** argv) {
     std::string bubblePath = std::string(AIRTRAP_SOURCE_DIR) + "/samples/pouring.json";
     std::vector<double> bubbleSizes = {50000};
     double bubbleWarmup = 1.0;
+    int bubbleFrames = 0;
     int steps = 50;
     int warmup = 5;
     int repeat = 3;
@@ -164,7 +214,9 @@ int main(int argc, char** argv) {
                    "Pool particle counts of the bubble cases (empty: none)")
         ->delimiter(',');
     app.add_option("--bubble-warmup", bubbleWarmup,
-                   "Simulated seconds baked before the bubble cases are measured");
+                   "Simulated seconds into the bake where the per-step bubble cases start");
+    app.add_option("--bubble-frames", bubbleFrames,
+                   "Frames of the whole-bake bubble comparison (0: the scene's end frame)");
     app.add_flag("--json", json, "Print one JSON array instead of a table");
     CLI11_PARSE(app, argc, argv);
 
@@ -191,18 +243,29 @@ int main(int argc, char** argv) {
                                    divingBunnyWith(bunny, size, true));
             }
         }
+        nlohmann::json all = nlohmann::json::array();
         std::vector<std::pair<BenchmarkCase, BenchmarkCase>> bubbleCases;
         if (!bubbleSizes.empty()) {
             const Scene pouring = readSceneFile(bubblePath);
             for (double size : bubbleSizes) {
-                auto on = pouringAfter(pouring, size, bubbleWarmup);
+                const Scene scene = pouringWith(pouring, size);
+                const std::string name = "pouring_" + thousands(size);
+                const int frames = bubbleFrames > 0 ? bubbleFrames : scene.frames.endFrame;
+                BubbleBakeResult bake = BubbleBakeComparison(scene, frames).run(0, bubbleWarmup);
+                if (json)
+                    all.push_back(toJson(name, bake));
+                else
+                    printBakeComparison(name, bake);
+                if (!bake.snapshot)
+                    throw std::runtime_error("--bubble-warmup " + std::to_string(bubbleWarmup) +
+                                             " s is past the bake's end; expected at most " +
+                                             std::to_string(frames / scene.frames.fps) + " s");
+                auto on = std::make_pair(scene, std::move(*bake.snapshot));
                 auto off = withoutBubbles(on);
-                bubbleCases.emplace_back(
-                    BenchmarkCase("pouring_" + thousands(size) + "_off", off.first, off.second),
-                    BenchmarkCase("pouring_" + thousands(size) + "_on", on.first, on.second));
+                bubbleCases.emplace_back(BenchmarkCase(name + "_off", off.first, off.second),
+                                         BenchmarkCase(name + "_on", on.first, on.second));
             }
         }
-        nlohmann::json all = nlohmann::json::array();
         if (!json)
             printTableHeader();
         const auto measure = [&](const BenchmarkCase& benchmark, int t) {
@@ -218,10 +281,17 @@ int main(int argc, char** argv) {
                 measure(benchmark, t);
         for (const auto& [off, on] : bubbleCases)
             for (int t : threads) {
-                const BenchmarkResult without = measure(off, t);
-                const BenchmarkResult with = measure(on, t);
-                if (!json)
-                    printBubbleOverhead(without, with);
+                const BubbleComparison pair = comparePaired(off, on, t, steps, warmup, repeat);
+                for (const BenchmarkResult* result : {&pair.off, &pair.on}) {
+                    if (json)
+                        all.push_back(toJson(*result));
+                    else
+                        printTableRow(*result);
+                }
+                if (json)
+                    all.back()["bubble_overhead_percent"] = pair.overheadPercent;
+                else
+                    printBubbleOverhead(pair);
             }
         if (json)
             std::cout << all.dump(2) << "\n";

@@ -1,5 +1,6 @@
 // Air pockets on the neighbour grid (paper §3.4): a closed cavity in the water is one pocket of
-// the right place and size; a cavity open to the air, or one inside a solid, is none.
+// the right place and size; a cavity open to the air (upwards or sideways), or one inside a
+// solid, is none.
 #include "bubbles/AirPocketFinder.h"
 
 #include <QtTest>
@@ -64,6 +65,20 @@ private Q_SLOTS:
             const bool chimney =
                 std::hypot(x.x() - centre.x(), x.z() - centre.z()) < 0.06 && x.y() > centre.y();
             return (x - centre).norm() < 0.1 || chimney;
+        }));
+        AirPocketFinder finder;
+        QVERIFY(finder.find(grid, kNoSolids).empty());
+    }
+
+    void airUnderAnOverhangIsAtmosphere() {
+        // A cave in the side of a pool: water above it, but open sideways to the air beside the
+        // pool, so the flood reaches it from the side (no column reaches it from above).
+        NeighborGrid grid(kDomain, kCell);
+        grid.build(poolWithHole(0.6, [&](const Vec3d& x) {
+            const bool besidePool = x.x() > 0.6;
+            const bool cave =
+                x.x() > 0.3 && x.y() > 0.2 && x.y() < 0.35 && x.z() > 0.3 && x.z() < 0.5;
+            return besidePool || cave;
         }));
         AirPocketFinder finder;
         QVERIFY(finder.find(grid, kNoSolids).empty());

@@ -94,6 +94,61 @@ private Q_SLOTS:
         QVERIFY(pairs > 10 * order.size());
     }
 
+    void ballRangesHoldEveryPointWithinTheRadiusOnce_data() {
+        QTest::addColumn<double>("radius");
+        QTest::newRow("inside one cell") << 0.03;
+        QTest::newRow("three cells") << 0.25;
+        QTest::newRow("past the domain") << 0.6;
+    }
+
+    void ballRangesHoldEveryPointWithinTheRadiusOnce() {
+        QFETCH(double, radius);
+        const Aabb domain{Vec3d(0.0, -0.2, 0.0), Vec3d(0.8, 0.4, 0.5)};
+        const std::vector<Vec3f> points = randomPoints(4000, domain, 5);
+        NeighborGrid grid(domain, 0.09f);
+        grid.build(points);
+        const auto& order = grid.order();
+        for (const Vec3d& centre : {Vec3d(0.4, 0.1, 0.25), Vec3d(0.05, 0.35, 0.47)}) {
+            std::vector<int> visits(points.size(), 0);
+            std::size_t visited = 0;
+            grid.forEachRangeInBall(centre, radius, [&](std::uint32_t begin, std::uint32_t end) {
+                for (std::uint32_t s = begin; s < end; ++s, ++visited)
+                    ++visits[order[s]];
+            });
+            std::size_t inside = 0, inBox = 0;
+            for (std::size_t p = 0; p < points.size(); ++p) {
+                const Vec3d offset = points[p].cast<double>() - centre;
+                QVERIFY(visits[p] <= 1);
+                if (offset.norm() < radius) {
+                    QVERIFY(visits[p] == 1);
+                    ++inside;
+                }
+                inBox += (offset.cwiseAbs().array() < radius + grid.cellSize()).all();
+            }
+            QVERIFY(inside > 0);
+            // The rows are trimmed to the ball: fewer points than the cells of its bounding box.
+            if (radius > 2.0 * grid.cellSize())
+                QVERIFY2(
+                    visited < inBox,
+                    qPrintable(QString("%1 visited of %2 in the box").arg(visited).arg(inBox)));
+        }
+    }
+
+    void reshapedGridSortsItsPointsAsTheWholeGridDoes() {
+        const Aabb whole{Vec3d::Zero(), Vec3d::Ones()};
+        const std::vector<Vec3f> points =
+            randomPoints(500, Aabb{Vec3d(0.3, 0.4, 0.2), Vec3d(0.6, 0.7, 0.5)}, 3);
+        NeighborGrid full(whole, 0.1f);
+        full.build(points);
+        NeighborGrid window(whole, 0.1f);
+        window.reshape(Aabb{Vec3d(0.2, 0.3, 0.1), Vec3d(0.7, 0.8, 0.6)}); // whole cells
+        window.build(points);
+        QVERIFY(window.cellTotal() < full.cellTotal() / 4);
+        QCOMPARE(window.order(), full.order());
+        QVERIFY(window.contains(points[0]));
+        QVERIFY(!window.contains(Vec3f(0.1f, 0.5f, 0.5f)));
+    }
+
     void sortIsStableAndGroupsCells() {
         const Aabb domain{Vec3d::Zero(), Vec3d::Ones()};
         const std::vector<Vec3f> points = randomPoints(2000, domain, 7);
