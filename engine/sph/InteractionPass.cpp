@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
@@ -11,6 +12,7 @@ namespace airtrap {
 namespace {
 using Range = tbb::blocked_range<std::size_t>;
 constexpr std::size_t kGrain = 512;
+constexpr std::size_t kSweepSkipsNone = std::numeric_limits<std::size_t>::max();
 } // namespace
 
 InteractionPass::InteractionPass(const CubicSplineKernel& kernel,
@@ -233,21 +235,17 @@ void InteractionPass::bodyReactions(const InteractionInputs& in,
                 continue;
             const Vec3f xb = layer.positions()[b];
             Vec3f force = Vec3f::Zero();
-            in.grid.forEachNeighborRange(
-                xb, kernel_.supportRadius(), [&](std::uint32_t begin, std::uint32_t end) {
-                    for (std::uint32_t i = begin; i < end; ++i) {
-                        const Vec3f xi = in.positions[i];
-                        const Vec3f d = xi - xb;
-                        const float r2 = d.squaredNorm();
-                        if (r2 >= radius2_)
-                            continue;
-                        force -= constants_.mass *
-                                 boundaryPairAcceleration(xi, in.fluid.velocities[i],
-                                                          in.fluid.densities[i], pressureTerms[i],
-                                                          b, d, r2, layer);
-                        if (contacts.boundaryParticle[i] == static_cast<std::int32_t>(b))
-                            force -= inverseStep * contacts.impulse[i];
-                    }
+            // The water's pairs with this boundary particle, the same ones and in the same order
+            // as the force pass met them: d points from the boundary particle to the water.
+            sweepNeighborsAround(
+                in.grid, in.positions, xb, kSweepSkipsNone, radius2_,
+                [&](std::uint32_t i, const Vec3f& towardsBoundary, float r2) {
+                    force -= constants_.mass *
+                             boundaryPairAcceleration(in.positions[i], in.fluid.velocities[i],
+                                                      in.fluid.densities[i], pressureTerms[i], b,
+                                                      -towardsBoundary, r2, layer);
+                    if (contacts.boundaryParticle[i] == static_cast<std::int32_t>(b))
+                        force -= inverseStep * contacts.impulse[i];
                 });
             forces[b] = force.cast<double>();
         }

@@ -9,6 +9,8 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
+#include <utility>
 #include <vector>
 
 namespace airtrap {
@@ -27,24 +29,24 @@ struct PositionArrays {
     }
 };
 
-//! Calls visit(j, d, r²) for every particle j ≠ i with |d| = |xᵢ − xⱼ| < radius.
+//! Calls visit(j, d, r²) for every particle j ≠ skip with |d| = |x − xⱼ| < radius: the sweep of
+//! a point that need not be one of the particles (skip = SIZE_MAX skips none).
 template <class Visit>
-void sweepNeighbors(const NeighborGrid& grid, const PositionArrays& positions, std::size_t i,
-                    float radius2, Visit&& visit) {
+void sweepNeighborsAround(const NeighborGrid& grid, const PositionArrays& positions, const Vec3f& x,
+                          std::size_t skip, float radius2, Visit&& visit) {
     constexpr std::size_t kBatch = 256;
     std::array<std::uint32_t, kBatch> neighbor;
     const float* px = positions.x.data();
     const float* py = positions.y.data();
     const float* pz = positions.z.data();
-    const Vec3f xi(px[i], py[i], pz[i]);
     std::size_t count = 0;
 
     const auto flush = [&] {
         for (std::size_t k = 0; k < count; ++k) {
             const std::uint32_t j = neighbor[k];
-            if (j == i)
+            if (j == skip)
                 continue; // kept out of the sweep's inner loop, which runs ~8× as often
-            const Vec3f d(xi.x() - px[j], xi.y() - py[j], xi.z() - pz[j]);
+            const Vec3f d(x.x() - px[j], x.y() - py[j], x.z() - pz[j]);
             visit(j, d, d.squaredNorm());
         }
         count = 0;
@@ -52,7 +54,7 @@ void sweepNeighbors(const NeighborGrid& grid, const PositionArrays& positions, s
     // The distances of a whole row first, in a loop the compiler vectorises; then the cheap
     // compaction of those inside the support.
     std::array<float, kBatch> rowDistance2;
-    grid.forEachNeighborRange(xi, std::sqrt(radius2), [&](std::uint32_t begin, std::uint32_t end) {
+    grid.forEachNeighborRange(x, std::sqrt(radius2), [&](std::uint32_t begin, std::uint32_t end) {
         while (begin < end) {
             const std::uint32_t chunk = std::min<std::uint32_t>(end - begin, kBatch);
             if (count + chunk > kBatch)
@@ -61,9 +63,9 @@ void sweepNeighbors(const NeighborGrid& grid, const PositionArrays& positions, s
             const float* cy = py + begin;
             const float* cz = pz + begin;
             for (std::uint32_t k = 0; k < chunk; ++k) {
-                const float dx = xi.x() - cx[k];
-                const float dy = xi.y() - cy[k];
-                const float dz = xi.z() - cz[k];
+                const float dx = x.x() - cx[k];
+                const float dy = x.y() - cy[k];
+                const float dz = x.z() - cz[k];
                 rowDistance2[k] = dx * dx + dy * dy + dz * dz;
             }
             for (std::uint32_t k = 0; k < chunk; ++k) {
@@ -74,6 +76,13 @@ void sweepNeighbors(const NeighborGrid& grid, const PositionArrays& positions, s
         }
     });
     flush();
+}
+
+//! Calls visit(j, d, r²) for every particle j ≠ i with |d| = |xᵢ − xⱼ| < radius.
+template <class Visit>
+void sweepNeighbors(const NeighborGrid& grid, const PositionArrays& positions, std::size_t i,
+                    float radius2, Visit&& visit) {
+    sweepNeighborsAround(grid, positions, positions[i], i, radius2, std::forward<Visit>(visit));
 }
 
 } // namespace airtrap
