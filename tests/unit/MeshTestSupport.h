@@ -1,14 +1,13 @@
 #pragma once
 // Meshes made in code for the rigid-geometry tests, and writers for the file formats the loader
 // must read, so each test knows its mesh exactly.
+#include "post/Icosphere.h"
 #include "rigid/TriangleMesh.h"
 
 #include <QString>
-#include <array>
 #include <cmath>
 #include <fstream>
 #include <limits>
-#include <map>
 #include <utility>
 
 namespace airtrap::test {
@@ -16,38 +15,7 @@ namespace airtrap::test {
 //! Icosahedron subdivided `levels` times, vertices pushed onto the sphere: 20·4^levels outward
 //! triangles (3 levels: 1280).
 inline TriangleMesh icosphere(double radius, int levels) {
-    const double t = (1.0 + std::sqrt(5.0)) / 2.0;
-    TriangleMesh mesh;
-    for (const Vec3d& v : {Vec3d(-1, t, 0), Vec3d(1, t, 0), Vec3d(-1, -t, 0), Vec3d(1, -t, 0),
-                           Vec3d(0, -1, t), Vec3d(0, 1, t), Vec3d(0, -1, -t), Vec3d(0, 1, -t),
-                           Vec3d(t, 0, -1), Vec3d(t, 0, 1), Vec3d(-t, 0, -1), Vec3d(-t, 0, 1)})
-        mesh.vertices.push_back(v.normalized());
-    mesh.triangles = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
-                      {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
-                      {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
-                      {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
-    for (int level = 0; level < levels; ++level) {
-        std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> midpoints;
-        const auto midpoint = [&](std::uint32_t a, std::uint32_t b) {
-            const auto key = std::minmax(a, b);
-            const auto found = midpoints.find(key);
-            if (found != midpoints.end())
-                return found->second;
-            mesh.vertices.push_back((mesh.vertices[a] + mesh.vertices[b]).normalized());
-            const auto index = static_cast<std::uint32_t>(mesh.vertices.size() - 1);
-            midpoints[key] = index;
-            return index;
-        };
-        std::vector<TriangleMesh::Triangle> finer;
-        for (const auto& [a, b, c] : mesh.triangles) {
-            const std::uint32_t ab = midpoint(a, b), bc = midpoint(b, c), ca = midpoint(c, a);
-            finer.insert(finer.end(), {{a, ab, ca}, {b, bc, ab}, {c, ca, bc}, {ab, bc, ca}});
-        }
-        mesh.triangles = std::move(finer);
-    }
-    for (Vec3d& v : mesh.vertices)
-        v *= radius;
-    return mesh;
+    return unitIcosphere(levels).transformed(radius);
 }
 
 //! Cube of edge `edge` centred at the origin, 12 outward triangles.
