@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
@@ -12,7 +11,6 @@ namespace airtrap {
 namespace {
 using Range = tbb::blocked_range<std::size_t>;
 constexpr std::size_t kGrain = 512;
-constexpr std::size_t kSweepSkipsNone = std::numeric_limits<std::size_t>::max();
 } // namespace
 
 InteractionPass::InteractionPass(const CubicSplineKernel& kernel,
@@ -238,7 +236,7 @@ void InteractionPass::bodyReactions(const InteractionInputs& in,
             // The water's pairs with this boundary particle, the same ones and in the same order
             // as the force pass met them: d points from the boundary particle to the water.
             sweepNeighborsAround(
-                in.grid, in.positions, xb, kSweepSkipsNone, radius2_,
+                in.grid, in.positions, xb, kSkipNone, radius2_,
                 [&](std::uint32_t i, const Vec3f& towardsBoundary, float r2) {
                     force -= constants_.mass *
                              boundaryPairAcceleration(in.positions[i], in.fluid.velocities[i],

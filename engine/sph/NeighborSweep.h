@@ -29,8 +29,11 @@ struct PositionArrays {
     }
 };
 
+//! The `skip` of a sweep around a point that is none of the particles.
+inline constexpr std::size_t kSkipNone = std::numeric_limits<std::size_t>::max();
+
 //! Calls visit(j, d, r²) for every particle j ≠ skip with |d| = |x − xⱼ| < radius: the sweep of
-//! a point that need not be one of the particles (skip = SIZE_MAX skips none).
+//! a point that need not be one of the particles.
 template <class Visit>
 void sweepNeighborsAround(const NeighborGrid& grid, const PositionArrays& positions, const Vec3f& x,
                           std::size_t skip, float radius2, Visit&& visit) {
