@@ -1,0 +1,12 @@
+#pragma once
+// The OpenVDB side of WaterVolume. Include only from .cpp files that already pay for OpenVDB's
+// headers (STYLE: keep them in few translation units).
+#include <openvdb/openvdb.h>
+
+namespace airtrap {
+
+struct WaterGrids {
+    openvdb::FloatGrid::Ptr surface; //!< signed distance, level-set class, negative inside
+};
+
+} // namespace airtrap

@@ -1,0 +1,157 @@
+// One of the few translation units that include OpenVDB's tools (STYLE: they are heavy).
+#include "post/WaterVolume.h"
+
+#include "core/Error.h"
+#include "post/WaterGrids.h"
+
+#include <algorithm>
+#include <cmath>
+#include <mutex>
+#include <openvdb/tools/Interpolation.h>
+#include <openvdb/tools/LevelSetFilter.h>
+#include <openvdb/tools/LevelSetMeasure.h>
+#include <openvdb/tools/ParticlesToLevelSet.h>
+#include <openvdb/tools/VolumeToMesh.h>
+#include <string>
+
+namespace airtrap {
+
+namespace {
+
+void initialiseOpenVdb() {
+    static std::once_flag once;
+    std::call_once(once, [] { openvdb::initialize(); });
+}
+
+//! The particle list OpenVDB's ParticlesToLevelSet reads: positions only, every sphere the same.
+class ParticlePositions {
+public:
+    using PosType = openvdb::Vec3R;
+
+    explicit ParticlePositions(const ParticleSet& fluid) : fluid_(fluid) {}
+    std::size_t size() const { return fluid_.size(); }
+    void getPos(std::size_t n, openvdb::Vec3R& xyz) const {
+        const Vec3f& p = fluid_.positions[n];
+        xyz = openvdb::Vec3R(p.x(), p.y(), p.z());
+    }
+
+private:
+    const ParticleSet& fluid_;
+};
+
+void checkSettings(double spacing, const SurfaceSettings& settings) {
+    const auto refuse = [](const std::string& what) {
+        throw Error(ErrorKind::InvalidInput, "free-surface mesh: " + what);
+    };
+    if (!(spacing > 0.0))
+        refuse("particle spacing " + std::to_string(spacing) + " m, expected > 0");
+    if (!(settings.voxelSize >= 0.1 && settings.voxelSize <= 2.0))
+        refuse("voxel size " + std::to_string(settings.voxelSize) + " spacings, expected 0.1 to 2");
+    // OpenVDB drops spheres narrower than 1.5 voxels; a surface made of them would have holes.
+    if (!(settings.particleRadius >= 1.5 * settings.voxelSize && settings.particleRadius <= 4.0))
+        refuse("particle radius " + std::to_string(settings.particleRadius) +
+               " spacings, expected 1.5 voxel sizes to 4");
+    if (settings.smoothing < 0 || settings.smoothing > 50)
+        refuse("smoothing " + std::to_string(settings.smoothing) + " passes, expected 0 to 50");
+}
+
+using SurfaceFilter =
+    openvdb::tools::LevelSetFilter<openvdb::FloatGrid, openvdb::FloatGrid, Interrupter>;
+
+//! Moves the surface along its normals until it encloses `target` m³. One move by
+//! (volume − target) / area is exact for a flat surface; the few passes absorb curvature. A move
+//! is capped at `maxShift`, so a frame of mostly spray is not eroded away.
+void matchVolume(SurfaceFilter& filter, double target, double maxShift) {
+    constexpr int kPasses = 3;
+    const double tolerance = 1e-4 * target;
+    for (int pass = 0; pass < kPasses; ++pass) {
+        const openvdb::FloatGrid& grid = filter.grid();
+        const double volume = openvdb::tools::levelSetVolume(grid);
+        const double area = openvdb::tools::levelSetArea(grid);
+        if (!(area > 0.0) || std::abs(volume - target) <= tolerance)
+            return;
+        const double shift = std::clamp((volume - target) / area, -maxShift, maxShift);
+        filter.offset(float(shift)); // positive offsets move the surface inward
+    }
+}
+
+Vec3d toVec3d(const openvdb::Vec3s& p) {
+    return {double(p.x()), double(p.y()), double(p.z())};
+}
+
+} // namespace
+
+WaterVolume WaterVolume::build(const ParticleSet& fluid, double spacing,
+                               const SurfaceSettings& settings, Interrupter* interrupter) {
+    checkSettings(spacing, settings);
+    WaterVolume volume;
+    volume.particleVolume_ = double(fluid.size()) * spacing * spacing * spacing;
+    if (fluid.empty())
+        return volume;
+    initialiseOpenVdb();
+
+    const double voxel = settings.voxelSize * spacing;
+    const double radius = settings.particleRadius * spacing;
+    // The band must hold the widest move matchVolume may make, plus the filters' stencils.
+    const float halfWidth = float(std::max(3.0, std::ceil(radius / voxel) + 2.0));
+    auto grid = openvdb::createLevelSet<openvdb::FloatGrid>(voxel, halfWidth);
+    grid->setName("surface");
+    openvdb::tools::ParticlesToLevelSet<openvdb::FloatGrid, void, Interrupter> raster(*grid,
+                                                                                      interrupter);
+    raster.rasterizeSpheres(ParticlePositions(fluid), radius);
+    raster.finalize(true);
+    if (interrupter != nullptr && interrupter->stopRequested())
+        return volume;
+
+    SurfaceFilter filter(*grid, interrupter);
+    for (int pass = 0; pass < settings.smoothing; ++pass)
+        filter.meanCurvature();
+    matchVolume(filter, volume.particleVolume_, radius);
+    if (interrupter != nullptr && interrupter->stopRequested())
+        return volume;
+
+    auto grids = std::make_shared<WaterGrids>();
+    grids->surface = grid;
+    volume.grids_ = std::move(grids);
+    return volume;
+}
+
+double WaterVolume::voxelSize() const {
+    return empty() ? 0.0 : grids_->surface->voxelSize().x();
+}
+
+double WaterVolume::volume() const {
+    return empty() ? 0.0 : openvdb::tools::levelSetVolume(*grids_->surface);
+}
+
+double WaterVolume::signedDistance(const Vec3d& x) const {
+    if (empty())
+        return std::numeric_limits<double>::infinity();
+    const openvdb::FloatGrid& grid = *grids_->surface;
+    const openvdb::Vec3d index = grid.transform().worldToIndex(openvdb::Vec3d(x.x(), x.y(), x.z()));
+    return openvdb::tools::BoxSampler::sample(grid.tree(), index);
+}
+
+TriangleMesh WaterVolume::mesh() const {
+    TriangleMesh mesh;
+    if (empty())
+        return mesh;
+    std::vector<openvdb::Vec3s> points;
+    std::vector<openvdb::Vec3I> triangles;
+    std::vector<openvdb::Vec4I> quads;
+    openvdb::tools::volumeToMesh(*grids_->surface, points, triangles, quads, 0.0, 0.0);
+    mesh.vertices.reserve(points.size());
+    for (const openvdb::Vec3s& p : points)
+        mesh.vertices.push_back(toVec3d(p));
+    mesh.triangles.reserve(triangles.size() + 2 * quads.size());
+    // OpenVDB winds its polygons clockwise seen from outside; ours are counter-clockwise.
+    for (const openvdb::Vec3I& t : triangles)
+        mesh.triangles.push_back({t[2], t[1], t[0]});
+    for (const openvdb::Vec4I& q : quads) {
+        mesh.triangles.push_back({q[2], q[1], q[0]});
+        mesh.triangles.push_back({q[3], q[2], q[0]});
+    }
+    return mesh;
+}
+
+} // namespace airtrap

@@ -1,0 +1,46 @@
+#pragma once
+// The water of one frame as a narrow-band level set (OpenVDB), the source of the free-surface
+// mesh and of the VDB export. Built the way a renderer's particle surfacer does it: a sphere per
+// particle, unioned, then smoothed by mean-curvature flow. Smoothing alone would shrink the
+// water, so the level set is then moved along its normals until it encloses the particles'
+// volume again (N particles × spacing³: each particle stands for one lattice cell of water).
+#include "core/Interrupter.h"
+#include "core/Math.h"
+#include "post/SurfaceSettings.h"
+#include "rigid/TriangleMesh.h"
+#include "sph/ParticleSet.h"
+
+#include <memory>
+
+namespace airtrap {
+
+struct WaterGrids;
+
+class WaterVolume {
+public:
+    //! The level set of `fluid` (particles placed `spacing` apart at t = 0). Returns an empty
+    //! volume when stopped through `interrupter`, or when there is no water. Throws
+    //! Error(InvalidInput) for settings out of range.
+    static WaterVolume build(const ParticleSet& fluid, double spacing,
+                             const SurfaceSettings& settings, Interrupter* interrupter = nullptr);
+
+    bool empty() const { return grids_ == nullptr; }
+    double voxelSize() const;
+    //! m³ inside the zero level set.
+    double volume() const;
+    //! m³ the particles stand for: the volume the level set was matched to.
+    double particleVolume() const { return particleVolume_; }
+    //! Distance to the surface at `x`, m: negative inside the water, clamped to the narrow band.
+    double signedDistance(const Vec3d& x) const;
+    //! The zero level set as a closed mesh, counter-clockwise seen from outside the water.
+    TriangleMesh mesh() const;
+
+    //! The OpenVDB grids, for exporters (post/WaterGrids.h); null when empty.
+    const WaterGrids* grids() const { return grids_.get(); }
+
+private:
+    std::shared_ptr<const WaterGrids> grids_;
+    double particleVolume_ = 0.0;
+};
+
+} // namespace airtrap
