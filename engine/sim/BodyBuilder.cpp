@@ -33,11 +33,6 @@ std::string bodyLabel(const Scene& scene, const RigidBodySettings& body) {
            std::to_string(index) + "] (" + ParameterCodec::formatValue(body.name) + ")";
 }
 
-BodyShape meshShape(const TriangleMesh& mesh, double spacing) {
-    return BodyShape::mesh(std::make_shared<SignedDistanceField>(
-        mesh, spacing / kVoxelsPerSpacing, kExteriorBandVoxels, kInteriorBandVoxels));
-}
-
 //! Moves every particle `distance` along its normal.
 void pushOut(BoundaryParticles& particles, double distance) {
     for (std::size_t k = 0; k < particles.size(); ++k)
@@ -75,6 +70,11 @@ TriangleMesh BodyBuilder::loadMesh(const Scene& scene, const RigidBodySettings& 
     } catch (const Error& error) {
         throw Error(ErrorKind::InvalidInput, bodyLabel(scene, body) + ".mesh: " + error.what());
     }
+}
+
+BodyShape BodyBuilder::meshShape(const TriangleMesh& mesh, double spacing) {
+    return BodyShape::mesh(std::make_shared<SignedDistanceField>(
+        mesh, spacing / kVoxelsPerSpacing, kExteriorBandVoxels, kInteriorBandVoxels));
 }
 
 BodyShape BodyBuilder::shapeOf(const Scene& scene, const RigidBodySettings& body, double spacing) {

@@ -29,6 +29,9 @@ public:
     static TriangleMesh loadMesh(const Scene& scene, const RigidBodySettings& body);
     //! The shape of any body, for contact and overlap tests; loads the mesh of a mesh body.
     static BodyShape shapeOf(const Scene& scene, const RigidBodySettings& body, double spacing);
+    //! The shape of a loaded mesh, its distance field sampled finely enough for contacts at
+    //! `spacing` and reaching 2.5 spacings outside the surface.
+    static BodyShape meshShape(const TriangleMesh& mesh, double spacing);
 
 private:
     //! Boundary particles half a spacing outside the surface (shape frame), with volumes.

@@ -1,0 +1,185 @@
+// The free-surface-only water mesh (paper §4.1, Fig. 2b/d): a resting pool in its tank, with a
+// bubble and a sphere body floating in its surface, keeps its free surface at the water's height
+// and loses every polygon within the margin of the tank, the bubble and the body. The solids are
+// placed from the frame's state; the primitives exported for them are closed and face outward.
+#include "post/FrameSolids.h"
+#include "post/FreeSurface.h"
+#include "post/SceneSolids.h"
+#include "post/ShapeTessellation.h"
+#include "post/WaterVolume.h"
+
+#include <QtTest>
+#include <cmath>
+
+using namespace airtrap;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kSpacing = 0.02;
+constexpr double kDepth = 0.3;
+const Vec3d kBubbleCentre(0.5, kDepth, 0.5);
+constexpr double kBubbleRadius = 0.06;
+const Vec3d kBallCentre(0.25, kDepth, 0.7);
+constexpr double kBallRadius = 0.08;
+
+Scene poolScene() {
+    Scene scene;
+    scene.solver.particleSpacing = kSpacing;
+    RigidBodySettings ball;
+    ball.name = "Ball";
+    ball.shape = "sphere";
+    ball.motion = "dynamic";
+    ball.radius = kBallRadius;
+    ball.position = kBallCentre;
+    scene.bodies.push_back(ball);
+    return scene;
+}
+
+//! The tank's unit floor filled to kDepth on the lattice, except where the bubble and the ball
+//! are (and half a spacing around them, where their boundary particles keep the water off).
+SimulationState poolState() {
+    SimulationState state;
+    std::uint32_t id = 0;
+    const int columns = int(std::round(1.0 / kSpacing));
+    const int rows = int(std::round(kDepth / kSpacing));
+    for (int i = 0; i < columns; ++i)
+        for (int j = 0; j < rows; ++j)
+            for (int k = 0; k < columns; ++k) {
+                const Vec3d p = kSpacing * Vec3d(i + 0.5, j + 0.5, k + 0.5);
+                if ((p - kBubbleCentre).norm() < kBubbleRadius + 0.5 * kSpacing ||
+                    (p - kBallCentre).norm() < kBallRadius + 0.5 * kSpacing)
+                    continue;
+                state.fluid.push(p.cast<float>(), Vec3f::Zero(), 1000.0f, id++);
+            }
+    BubbleState bubble;
+    bubble.radius = kBubbleRadius;
+    bubble.body.position = kBubbleCentre;
+    state.bubbles.push_back(bubble);
+    RigidBodyState ball;
+    ball.position = kBallCentre;
+    state.bodies.push_back(ball);
+    return state;
+}
+
+//! Distance to the nearest of the tank's floor and walls, the bubble and the ball, worked out
+//! here from the set-up rather than by the code under test.
+double distanceToSolids(const Vec3d& x) {
+    const double tank = std::min({x.y(), x.x(), 1.0 - x.x(), x.z(), 1.0 - x.z()});
+    const double bubble = (x - kBubbleCentre).norm() - kBubbleRadius;
+    const double ball = (x - kBallCentre).norm() - kBallRadius;
+    return std::min({tank, bubble, ball});
+}
+
+bool facesOutward(const TriangleMesh& mesh, const Vec3d& centre) {
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+        const auto& [a, b, c] = mesh.triangles[t];
+        const Vec3d middle = (mesh.vertices[a] + mesh.vertices[b] + mesh.vertices[c]) / 3.0;
+        if (mesh.normal(t).dot(middle - centre) <= 0.0)
+            return false;
+    }
+    return true;
+}
+
+} // namespace
+
+class TestFreeSurface : public QObject {
+    Q_OBJECT
+
+private Q_SLOTS:
+    void initTestCase() {
+        const WaterVolume water = WaterVolume::build(state_.fluid, kSpacing, settings_);
+        full_ = water.mesh();
+        const SceneSolids solids(scene_);
+        trimmed_ = freeSurfaceOnly(full_, FrameSolids(solids, state_), margin());
+        QVERIFY(trimmed_.triangleCount() > 1000);
+    }
+
+    void noVertexLiesWithinTheMarginOfASolidOrABubble() {
+        double closest = 1.0;
+        for (const Vec3d& v : trimmed_.vertices)
+            closest = std::min(closest, distanceToSolids(v));
+        QVERIFY2(
+            closest >= margin(),
+            qPrintable(
+                QString("a vertex %1 m from a solid, margin %2 m").arg(closest).arg(margin())));
+        // The full mesh does come that close: the trimming is what keeps the margin.
+        std::size_t near = 0;
+        for (const Vec3d& v : full_.vertices)
+            near += distanceToSolids(v) < margin() ? 1 : 0;
+        QVERIFY(near > full_.vertices.size() / 2);
+    }
+
+    void theFreeSurfaceStaysAtTheWatersHeight() {
+        // Area-weighted height of what is left: the pool's top, to a tenth of a spacing.
+        double area = 0.0;
+        double moment = 0.0;
+        for (std::size_t t = 0; t < trimmed_.triangleCount(); ++t) {
+            const auto& [a, b, c] = trimmed_.triangles[t];
+            const double y =
+                (trimmed_.vertices[a] + trimmed_.vertices[b] + trimmed_.vertices[c]).y();
+            area += trimmed_.area(t);
+            moment += trimmed_.area(t) * y / 3.0;
+            QVERIFY2(trimmed_.normal(t).y() > 0.5, "a free-surface triangle does not face up");
+        }
+        const double height = moment / area;
+        QVERIFY2(
+            std::abs(height - kDepth) < 0.1 * kSpacing,
+            qPrintable(QString("free surface at %1 m, water %2 m deep").arg(height).arg(kDepth)));
+        // The top less a strip along the walls and discs around the bubble and the ball, where
+        // they cut through the surface at their equators. A triangle goes with its first vertex
+        // inside the margin, so the cut lies on average half a voxel beyond it.
+        const double cut = margin() + 0.5 * settings_.voxelSize * kSpacing;
+        const double side = 1.0 - 2.0 * cut;
+        const double holes =
+            kPi * (std::pow(kBubbleRadius + cut, 2) + std::pow(kBallRadius + cut, 2));
+        const double expected = side * side - holes;
+        QVERIFY2(std::abs(area / expected - 1.0) < 0.01,
+                 qPrintable(QString("free surface %1 m², expected %2 m²").arg(area).arg(expected)));
+    }
+
+    void aBodyIsPlacedWhereTheFrameHasIt() {
+        SimulationState moved = state_;
+        moved.bodies[0].position = Vec3d(0.6, 0.8, 0.4);
+        moved.bodies[0].orientation = Quatd(Eigen::AngleAxisd(0.7, Vec3d::UnitZ()));
+        moved.bubbles.clear();
+        const SceneSolids solids(scene_);
+        const FrameSolids frame(solids, moved);
+        const Vec3d probe(0.6, 0.8 + kBallRadius + 0.05, 0.4);
+        QVERIFY(std::abs(frame.clearance(probe) - 0.05) < 1e-12);
+        // Where the bubble was, only the tank's floor is left to measure from.
+        QVERIFY(std::abs(frame.clearance(kBubbleCentre) - kDepth) < 1e-12);
+        const std::vector<NamedMesh> meshes = frame.meshes();
+        QCOMPARE(meshes.size(), std::size_t(1));
+        QCOMPARE(meshes[0].name, std::string("Ball"));
+        QVERIFY(meshes[0].mesh.bounds().center().isApprox(Vec3d(0.6, 0.8, 0.4), 1e-9));
+    }
+
+    void primitiveMeshesAreClosedAndFaceOutward() {
+        const TriangleMesh box = tessellateBox(Vec3d(0.2, 0.4, 0.6));
+        QVERIFY(std::abs(box.signedVolume() - 0.2 * 0.4 * 0.6) < 1e-12);
+        QVERIFY(facesOutward(box, Vec3d::Zero()));
+        const int segments = 48;
+        const TriangleMesh cylinder = tessellateCylinder(0.1, 0.5, segments);
+        // A prism on the regular 48-gon inscribed in the circle.
+        const double polygon = 0.5 * segments * 0.01 * std::sin(2.0 * kPi / segments);
+        QVERIFY(std::abs(cylinder.signedVolume() - polygon * 0.5) < 1e-12);
+        QVERIFY(facesOutward(cylinder, Vec3d::Zero()));
+        const TriangleMesh sphere = tessellateSphere(0.3);
+        QVERIFY(facesOutward(sphere, Vec3d::Zero()));
+        const double sphereError = sphere.signedVolume() / (4.0 / 3.0 * kPi * 0.027) - 1.0;
+        QVERIFY(sphereError < 0.0 && sphereError > -0.01); // 1280 triangles fall 0.86 % short
+    }
+
+private:
+    double margin() const { return settings_.margin * kSpacing; }
+
+    SurfaceSettings settings_;
+    Scene scene_ = poolScene();
+    SimulationState state_ = poolState();
+    TriangleMesh full_;
+    TriangleMesh trimmed_;
+};
+
+QTEST_APPLESS_MAIN(TestFreeSurface)
+#include "TestFreeSurface.moc"
