@@ -1,0 +1,95 @@
+#include "io/ObjExporter.h"
+
+#include "core/AtomicFile.h"
+
+#include <charconv>
+#include <string_view>
+
+namespace airtrap {
+
+namespace {
+
+//! Appends " x y z" with the shortest decimals that read back to the same floats: a tenth of a
+//! millimetre survives at a kilometre, and the file stays small.
+void appendTriple(std::string& text, const Vec3d& v) {
+    char buffer[64];
+    for (int axis = 0; axis < 3; ++axis) {
+        buffer[0] = ' ';
+        const auto result = std::to_chars(buffer + 1, buffer + sizeof buffer, float(v[axis]));
+        text.append(buffer, result.ptr);
+    }
+    text += '\n';
+}
+
+std::string objectName(const std::string& name) {
+    // A name is one token to most readers; spaces would split it.
+    std::string token = name.empty() ? std::string("object") : name;
+    for (char& c : token)
+        if (c == ' ' || c == '\t' || c == '\n' || c == '\r')
+            c = '_';
+    return token;
+}
+
+void appendObject(std::string& text, const NamedMesh& object, UpAxis up, std::size_t firstVertex) {
+    text += "o " + objectName(object.name) + "\n";
+    for (const Vec3d& v : object.mesh.vertices) {
+        text += 'v';
+        appendTriple(text, toExportAxes(v, up));
+    }
+    for (const Vec3d& n : vertexNormals(object.mesh)) {
+        text += "vn";
+        appendTriple(text, toExportAxes(n, up));
+    }
+    char buffer[32];
+    for (const TriangleMesh::Triangle& t : object.mesh.triangles) {
+        text += 'f';
+        for (const std::uint32_t index : t) {
+            // OBJ counts from 1, across the whole file.
+            const auto end = std::to_chars(buffer, buffer + sizeof buffer, firstVertex + index + 1);
+            const std::string_view number(buffer, std::size_t(end.ptr - buffer));
+            text += ' ';
+            text += number;
+            text += "//";
+            text += number;
+        }
+        text += '\n';
+    }
+}
+
+} // namespace
+
+std::vector<Vec3d> vertexNormals(const TriangleMesh& mesh) {
+    std::vector<Vec3d> normals(mesh.vertices.size(), Vec3d::Zero());
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t)
+        for (const std::uint32_t v : mesh.triangles[t])
+            normals[v] += mesh.areaVector(t);
+    for (Vec3d& n : normals)
+        if (n.squaredNorm() > 0.0)
+            n.normalize();
+    return normals;
+}
+
+std::string ObjExporter::encode(const std::vector<NamedMesh>& objects, UpAxis up,
+                                const std::vector<std::string>& comments) {
+    std::string text;
+    for (std::string comment : comments) {
+        // A line break would end the comment and leave the rest as a statement.
+        for (char& c : comment)
+            if (c == '\n' || c == '\r')
+                c = ' ';
+        text += "# " + comment + "\n";
+    }
+    std::size_t firstVertex = 0;
+    for (const NamedMesh& object : objects) {
+        appendObject(text, object, up, firstVertex);
+        firstVertex += object.mesh.vertices.size();
+    }
+    return text;
+}
+
+void ObjExporter::write(const std::string& path, const std::vector<NamedMesh>& objects, UpAxis up,
+                        const std::vector<std::string>& comments) {
+    AtomicFile::write(path, encode(objects, up, comments));
+}
+
+} // namespace airtrap

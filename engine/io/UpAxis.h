@@ -1,0 +1,17 @@
+#pragma once
+// Exports are in metres with y up, as the simulation is (DESIGN §4); renderers that want z up
+// (Blender's scene axes, most CAD) get the same picture turned a quarter about x: what was up
+// points along +z and what pointed at the viewer (+z) points away along +y, a proper rotation,
+// so meshes keep their winding.
+#include "core/Math.h"
+
+namespace airtrap {
+
+enum class UpAxis { Y, Z };
+
+//! `v` (a position, velocity or normal in the simulation's frame) in the export's frame.
+inline Vec3d toExportAxes(const Vec3d& v, UpAxis up) {
+    return up == UpAxis::Y ? v : Vec3d(v.x(), -v.z(), v.y());
+}
+
+} // namespace airtrap
