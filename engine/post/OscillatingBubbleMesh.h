@@ -7,8 +7,8 @@
 //   δ(t) = k r (t/T − 1)² sin(2nπ t/T) for 0 < t ≤ T, else 0 (eq. 10)
 // γ lies along the velocity: a bubble narrower than r across is stretched along its path.
 #include "bubbles/BubbleState.h"
-#include "post/BubbleMeshSettings.h"
 #include "rigid/TriangleMesh.h"
+#include "scene/Scene.h"
 
 namespace airtrap {
 

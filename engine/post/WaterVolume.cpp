@@ -39,20 +39,24 @@ private:
     const ParticleSet& fluid_;
 };
 
-void checkSettings(double spacing, const SurfaceSettings& settings) {
+//! The scene validator refuses these before a bake; a caller with its own settings (a test, a
+//! tool) gets the same rules here, worded with the scene's keys.
+void checkSettings(double spacing, const SurfaceMeshSettings& settings) {
     const auto refuse = [](const std::string& what) {
         throw Error(ErrorKind::InvalidInput, "free-surface mesh: " + what);
     };
     if (!(spacing > 0.0))
-        refuse("particle spacing " + std::to_string(spacing) + " m, expected > 0");
+        refuse("solver.particle_spacing = " + std::to_string(spacing) + " m, expected > 0");
     if (!(settings.voxelSize >= 0.1 && settings.voxelSize <= 2.0))
-        refuse("voxel size " + std::to_string(settings.voxelSize) + " spacings, expected 0.1 to 2");
+        refuse("surface_mesh.voxel_size = " + std::to_string(settings.voxelSize) +
+               ", expected 0.1 to 2");
     // OpenVDB drops spheres narrower than 1.5 voxels; a surface made of them would have holes.
     if (!(settings.particleRadius >= 1.5 * settings.voxelSize && settings.particleRadius <= 4.0))
-        refuse("particle radius " + std::to_string(settings.particleRadius) +
-               " spacings, expected 1.5 voxel sizes to 4");
+        refuse("surface_mesh.particle_radius = " + std::to_string(settings.particleRadius) +
+               ", expected 1.5 × surface_mesh.voxel_size to 4");
     if (settings.smoothing < 0 || settings.smoothing > 50)
-        refuse("smoothing " + std::to_string(settings.smoothing) + " passes, expected 0 to 50");
+        refuse("surface_mesh.smoothing = " + std::to_string(settings.smoothing) +
+               ", expected 0 to 50");
 }
 
 using SurfaceFilter =
@@ -82,7 +86,7 @@ Vec3d toVec3d(const openvdb::Vec3s& p) {
 } // namespace
 
 WaterVolume WaterVolume::build(const ParticleSet& fluid, double spacing,
-                               const SurfaceSettings& settings, Interrupter* interrupter) {
+                               const SurfaceMeshSettings& settings, Interrupter* interrupter) {
     checkSettings(spacing, settings);
     WaterVolume volume;
     volume.particleVolume_ = double(fluid.size()) * spacing * spacing * spacing;

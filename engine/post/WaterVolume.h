@@ -6,8 +6,8 @@
 // volume again (N particles × spacing³: each particle stands for one lattice cell of water).
 #include "core/Interrupter.h"
 #include "core/Math.h"
-#include "post/SurfaceSettings.h"
 #include "rigid/TriangleMesh.h"
+#include "scene/Scene.h"
 #include "sph/ParticleSet.h"
 
 #include <memory>
@@ -22,7 +22,8 @@ public:
     //! volume when stopped through `interrupter`, or when there is no water. Throws
     //! Error(InvalidInput) for settings out of range.
     static WaterVolume build(const ParticleSet& fluid, double spacing,
-                             const SurfaceSettings& settings, Interrupter* interrupter = nullptr);
+                             const SurfaceMeshSettings& settings,
+                             Interrupter* interrupter = nullptr);
 
     bool empty() const { return grids_ == nullptr; }
     double voxelSize() const;

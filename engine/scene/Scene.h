@@ -123,6 +123,23 @@ struct BubbleSettings {
     double impactSpeed = 2.0;           //!< m/s of water hitting a floating bubble that pops it
 };
 
+//! The free-surface water mesh (paper §4.1, DESIGN §4). Lengths in particle spacings, so a scene
+//! keeps its look when its resolution changes.
+struct SurfaceMeshSettings {
+    double voxelSize = 0.5;      //!< spacings per voxel of the level set (finer: more detail)
+    double particleRadius = 1.0; //!< spacings; radius of the sphere each particle contributes
+    int smoothing = 4;           //!< mean-curvature passes that flatten the spheres' bumps
+    double margin = 1.0;         //!< spacings; polygons this close to a body or bubble are dropped
+};
+
+//! The oscillating bubble mesh (paper §4.1, eq. 10).
+struct BubbleMeshSettings {
+    int subdivisions = 2;   //!< of the icosphere: 20·4^n triangles (2: 320)
+    double magnitude = 0.1; //!< k: the largest change of the cross radius, as a share of r (≪ 1)
+    double duration = 0.5;  //!< T, s: how long a bubble wobbles after its birth
+    double cycles = 3.0;    //!< n: oscillations within T
+};
+
 struct Scene {
     static constexpr int kFormatVersion = 1;
 
@@ -137,6 +154,8 @@ struct Scene {
     std::vector<RigidBodySettings> bodies;
     std::vector<BodyKeyframe> keyframes;
     BubbleSettings bubbles;
+    SurfaceMeshSettings surfaceMesh;
+    BubbleMeshSettings bubbleMesh;
 
     //! Where the scene was read from (not saved); used in messages.
     std::string sourcePath;

@@ -237,9 +237,12 @@ void writeSceneFile(const Scene& scene, const std::string& path) {
 std::string parameterHash(const Scene& scene) {
     Json canonical = sceneToJson(scene);
     // The name is a label, and the end frame only says how far to bake: renaming a scene or
-    // extending its bake must not orphan its cache.
+    // extending its bake must not orphan its cache. Nor must a change to how it is rendered.
     canonical.erase("name");
     canonical["frames"].erase("end_frame");
+    // The render outputs' settings shape the post stage only; the bake does not read them.
+    canonical.erase("surface_mesh");
+    canonical.erase("bubble_mesh");
     char hex[17];
     std::snprintf(hex, sizeof hex, "%016llx",
                   static_cast<unsigned long long>(fnv1a64(canonical.dump())));

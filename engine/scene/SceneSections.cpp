@@ -2,6 +2,7 @@
 
 #include "scene/BodySections.h"
 #include "scene/BubbleSection.h"
+#include "scene/PostSections.h"
 #include "scene/SchemaBinding.h"
 
 namespace airtrap {
@@ -387,6 +388,8 @@ std::vector<SchemaSection> buildSceneSections() {
     sections.push_back(bodiesSection());
     sections.push_back(keyframesSection());
     sections.push_back(bubblesSection());
+    sections.push_back(surfaceMeshSection());
+    sections.push_back(bubbleMeshSection());
     return sections;
 }
 

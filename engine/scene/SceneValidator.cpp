@@ -60,6 +60,7 @@ public:
         checkBodyNames();
         checkKeyframes();
         checkBubbles();
+        checkSurfaceMesh();
         if (containerValid && issues_.ok())
             checkBodyPlacement();
         return issues_;
@@ -248,6 +249,16 @@ private:
                   " m/s; raise solver.max_speed or lower the cap");
     }
 
+    void checkSurfaceMesh() {
+        const SurfaceMeshSettings& surface = scene_.surfaceMesh;
+        // OpenVDB leaves out spheres narrower than 1.5 voxels: the water would have holes.
+        if (surface.particleRadius < 1.5 * surface.voxelSize)
+            error(
+                "surface_mesh.particle_radius = " + number(surface.particleRadius) +
+                " is less than 1.5 × surface_mesh.voxel_size = " + number(1.5 * surface.voxelSize) +
+                "; particles narrower than 1.5 voxels would leave holes in the water mesh");
+    }
+
     void checkBodyNames() {
         for (std::size_t i = 0; i < scene_.bodies.size(); ++i)
             for (std::size_t j = 0; j < i; ++j)
@@ -326,6 +337,7 @@ std::vector<std::string> SceneValidator::ruleDescriptions() {
         "Every keyframe names a kinematic body, and no two keyframes of a body share a time.",
         "`bubbles.approach_restitution` is at most `bubbles.overlap_restitution` (ε₁ ≤ ε₂ ≤ 0); "
         "with bubbles enabled, `bubbles.max_rise_speed` is at most `solver.max_speed`.",
+        "`surface_mesh.particle_radius` is at least 1.5 × `surface_mesh.voxel_size`.",
         "Warnings, which do not stop a bake: fluid blocks that overlap each other or an "
         "obstacle, fluid blocks thinner than `particle_spacing`, emitters whose "
         "`max_particles` is less than one layer of their nozzle, and bodies that overlap the "

@@ -174,7 +174,7 @@ private Q_SLOTS:
 private:
     double margin() const { return settings_.margin * kSpacing; }
 
-    SurfaceSettings settings_;
+    SurfaceMeshSettings settings_;
     Scene scene_ = poolScene();
     SimulationState state_ = poolState();
     TriangleMesh full_;

@@ -288,6 +288,16 @@ private Q_SLOTS:
         changed.fluidBlocks[0].max.y() += 1e-9;
         QVERIFY(parameterHash(changed) != hash);
     }
+
+    void renderSettingsDoNotChangeTheBakesHash() {
+        Scene scene = Scene();
+        const std::string hash = parameterHash(scene);
+        scene.surfaceMesh.smoothing = 9;
+        scene.bubbleMesh.magnitude = 0.2;
+        QCOMPARE(parameterHash(scene), hash);
+        scene.solver.viscosityAlpha = 0.2;
+        QVERIFY(parameterHash(scene) != hash);
+    }
 };
 
 QTEST_APPLESS_MAIN(TestSceneJson)

@@ -147,6 +147,18 @@ private Q_SLOTS:
                                    "2 m/s"),
                  message.c_str());
     }
+
+    void surfaceParticlesSpanOneAndAHalfVoxels() {
+        Scene scene = validScene();
+        scene.surfaceMesh.voxelSize = 1.0;
+        scene.surfaceMesh.particleRadius = 1.2;
+        QCOMPARE(validationError(scene),
+                 std::string("tank.json: surface_mesh.particle_radius = 1.2 is less than 1.5 × "
+                             "surface_mesh.voxel_size = 1.5; particles narrower than 1.5 voxels "
+                             "would leave holes in the water mesh"));
+        scene.surfaceMesh.particleRadius = 1.5;
+        QVERIFY(validateScene(scene).empty());
+    }
 };
 
 QTEST_APPLESS_MAIN(TestSceneValidator)

@@ -111,10 +111,10 @@ private Q_SLOTS:
 
     void settingsOutOfRangeAreRefused() {
         const ParticleSet fluid = latticeBlock({Vec3d::Zero(), Vec3d::Constant(0.1)}, 0.02);
-        SurfaceSettings coarse;
+        SurfaceMeshSettings coarse;
         coarse.voxelSize = 1.0; // the spheres (1 spacing) would be narrower than 1.5 voxels
         QVERIFY_THROWS_EXCEPTION(Error, WaterVolume::build(fluid, 0.02, coarse));
-        SurfaceSettings rough;
+        SurfaceMeshSettings rough;
         rough.smoothing = -1;
         QVERIFY_THROWS_EXCEPTION(Error, WaterVolume::build(fluid, 0.02, rough));
         QVERIFY_THROWS_EXCEPTION(Error, WaterVolume::build(fluid, 0.0, {}));

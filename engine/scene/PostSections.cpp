@@ -1,0 +1,105 @@
+#include "scene/PostSections.h"
+
+#include "scene/SchemaBinding.h"
+
+namespace airtrap {
+namespace {
+
+using namespace schema;
+
+using SurfaceAccess = ObjectAccess<&Scene::surfaceMesh>;
+using BubbleMeshAccess = ObjectAccess<&Scene::bubbleMesh>;
+
+} // namespace
+
+SchemaSection surfaceMeshSection() {
+    return objectSection(
+        "surface_mesh", "Surface mesh",
+        "The water mesh for rendering: a level set of the particles, smoothed without losing "
+        "volume, with the polygons near bodies and bubbles left out so the free surface is all "
+        "that remains (paper §4.1).",
+        {
+            bind<SurfaceAccess>({.key = "voxel_size",
+                                 .label = "Voxel size",
+                                 .unit = "× spacing",
+                                 .minimum = 0.1,
+                                 .maximum = 2.0,
+                                 .defaultValue = 0.5,
+                                 .help = "Edge of the level set's voxels. Halving it shows finer "
+                                         "ripples for four times the polygons."},
+                                &SurfaceMeshSettings::voxelSize),
+            bind<SurfaceAccess>({.key = "particle_radius",
+                                 .label = "Particle radius",
+                                 .unit = "× spacing",
+                                 .minimum = 0.5,
+                                 .maximum = 4.0,
+                                 .defaultValue = 1.0,
+                                 .help = "Radius of the sphere each particle adds to the level "
+                                         "set; at least 1.5 voxels. Larger joins more spray into "
+                                         "sheets."},
+                                &SurfaceMeshSettings::particleRadius),
+            bind<SurfaceAccess>({.key = "smoothing",
+                                 .label = "Smoothing passes",
+                                 .minimum = 0,
+                                 .maximum = 50,
+                                 .defaultValue = 4LL,
+                                 .help = "Mean-curvature passes that flatten the particles' "
+                                         "bumps. The volume is restored afterwards, so more "
+                                         "passes round the water off without shrinking it."},
+                                &SurfaceMeshSettings::smoothing),
+            bind<SurfaceAccess>({.key = "margin",
+                                 .label = "Boundary margin",
+                                 .unit = "× spacing",
+                                 .minimum = 0.0,
+                                 .maximum = 2.0,
+                                 .defaultValue = 1.0,
+                                 .help = "Polygons with a corner closer than this to a body, the "
+                                         "tank or a bubble are left out (paper Fig. 2b): there "
+                                         "the other object's own surface is rendered."},
+                                &SurfaceMeshSettings::margin),
+        });
+}
+
+SchemaSection bubbleMeshSection() {
+    return objectSection(
+        "bubble_mesh", "Bubble mesh",
+        "How bubbles are rendered: ellipsoids of the bubble's volume, stretched along their "
+        "velocity, that wobble and settle after their birth (paper §4.1, eqs. 7–10).",
+        {
+            bind<BubbleMeshAccess>({.key = "subdivisions",
+                                    .label = "Subdivisions",
+                                    .minimum = 0,
+                                    .maximum = 6,
+                                    .defaultValue = 2LL,
+                                    .help = "Of the icosphere each bubble is made from: 20·4ⁿ "
+                                            "triangles (2: 320)."},
+                                   &BubbleMeshSettings::subdivisions),
+            bind<BubbleMeshAccess>({.key = "magnitude",
+                                    .label = "Wobble magnitude k",
+                                    .minimum = 0.0,
+                                    .maximum = 0.5,
+                                    .defaultValue = 0.1,
+                                    .help = "Largest change of the cross radius, as a share of "
+                                            "the radius (eq. 10; k ≪ 1). 0 keeps bubbles "
+                                            "spherical."},
+                                   &BubbleMeshSettings::magnitude),
+            bind<BubbleMeshAccess>({.key = "duration",
+                                    .label = "Wobble duration T",
+                                    .unit = "s",
+                                    .minimum = 0.01,
+                                    .maximum = 10.0,
+                                    .defaultValue = 0.5,
+                                    .help = "How long a bubble wobbles after its birth; the "
+                                            "wobble dies away as (t/T − 1)² (eq. 10)."},
+                                   &BubbleMeshSettings::duration),
+            bind<BubbleMeshAccess>({.key = "cycles",
+                                    .label = "Wobble cycles n",
+                                    .minimum = 0.5,
+                                    .maximum = 20.0,
+                                    .defaultValue = 3.0,
+                                    .help = "Oscillations within the duration (eq. 10)."},
+                                   &BubbleMeshSettings::cycles),
+        });
+}
+
+} // namespace airtrap

@@ -1,0 +1,14 @@
+#pragma once
+// The declarations of the render outputs' settings (paper §4; DESIGN §4 "Free-surface mesh",
+// "Oscillating bubble mesh"). They shape what the post stage makes of a bake, not the bake, so
+// the cache's parameter hash leaves them out: changing them never asks for a re-bake.
+#include "scene/SchemaSection.h"
+
+namespace airtrap {
+
+//! The `surface_mesh` object section: the free-surface water mesh.
+SchemaSection surfaceMeshSection();
+//! The `bubble_mesh` object section: the oscillating bubble mesh.
+SchemaSection bubbleMeshSection();
+
+} // namespace airtrap
