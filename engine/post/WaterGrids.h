@@ -6,7 +6,8 @@
 namespace airtrap {
 
 struct WaterGrids {
-    openvdb::FloatGrid::Ptr surface; //!< signed distance, level-set class, negative inside
+    openvdb::FloatGrid::Ptr surface;  //!< signed distance, level-set class, negative inside
+    openvdb::Vec3SGrid::Ptr velocity; //!< m/s of the nearest particle, over the surface's band
 };
 
 } // namespace airtrap

@@ -23,16 +23,21 @@ void initialiseOpenVdb() {
     std::call_once(once, [] { openvdb::initialize(); });
 }
 
-//! The particle list OpenVDB's ParticlesToLevelSet reads: positions only, every sphere the same.
-class ParticlePositions {
+//! The particle list OpenVDB's ParticlesToLevelSet reads: every sphere the same size, each
+//! carrying its velocity into the voxels it is nearest to.
+class ParticleList {
 public:
     using PosType = openvdb::Vec3R;
 
-    explicit ParticlePositions(const ParticleSet& fluid) : fluid_(fluid) {}
+    explicit ParticleList(const ParticleSet& fluid) : fluid_(fluid) {}
     std::size_t size() const { return fluid_.size(); }
     void getPos(std::size_t n, openvdb::Vec3R& xyz) const {
         const Vec3f& p = fluid_.positions[n];
         xyz = openvdb::Vec3R(p.x(), p.y(), p.z());
+    }
+    void getAtt(std::size_t n, openvdb::Vec3s& velocity) const {
+        const Vec3f& v = fluid_.velocities[n];
+        velocity = openvdb::Vec3s(v.x(), v.y(), v.z());
     }
 
 private:
@@ -88,40 +93,54 @@ Vec3d toVec3d(const openvdb::Vec3s& p) {
 WaterVolume WaterVolume::build(const ParticleSet& fluid, double spacing,
                                const SurfaceMeshSettings& settings, Interrupter* interrupter) {
     checkSettings(spacing, settings);
-    WaterVolume volume;
-    volume.particleVolume_ = double(fluid.size()) * spacing * spacing * spacing;
-    if (fluid.empty())
-        return volume;
     initialiseOpenVdb();
-
     const double voxel = settings.voxelSize * spacing;
     const double radius = settings.particleRadius * spacing;
     // The band must hold the widest move matchVolume may make, plus the filters' stencils.
     const float halfWidth = float(std::max(3.0, std::ceil(radius / voxel) + 2.0));
-    auto grid = openvdb::createLevelSet<openvdb::FloatGrid>(voxel, halfWidth);
-    grid->setName("surface");
-    openvdb::tools::ParticlesToLevelSet<openvdb::FloatGrid, void, Interrupter> raster(*grid,
-                                                                                      interrupter);
-    raster.rasterizeSpheres(ParticlePositions(fluid), radius);
-    raster.finalize(true);
-    if (interrupter != nullptr && interrupter->stopRequested())
-        return volume;
-
-    SurfaceFilter filter(*grid, interrupter);
-    for (int pass = 0; pass < settings.smoothing; ++pass)
-        filter.meanCurvature();
-    matchVolume(filter, volume.particleVolume_, radius);
-    if (interrupter != nullptr && interrupter->stopRequested())
-        return volume;
-
     auto grids = std::make_shared<WaterGrids>();
-    grids->surface = grid;
-    volume.grids_ = std::move(grids);
-    return volume;
+    grids->surface = openvdb::createLevelSet<openvdb::FloatGrid>(voxel, halfWidth);
+    grids->surface->setName("surface");
+    grids->velocity = openvdb::Vec3SGrid::create();
+    const double particleVolume = double(fluid.size()) * spacing * spacing * spacing;
+
+    if (!fluid.empty()) {
+        openvdb::tools::ParticlesToLevelSet<openvdb::FloatGrid, openvdb::Vec3s, Interrupter> raster(
+            *grids->surface, interrupter);
+        raster.rasterizeSpheres(ParticleList(fluid), radius);
+        raster.finalize(true);
+        grids->velocity = raster.attributeGrid();
+        SurfaceFilter filter(*grids->surface, interrupter);
+        for (int pass = 0; pass < settings.smoothing; ++pass)
+            filter.meanCurvature();
+        matchVolume(filter, particleVolume, radius);
+    }
+    if (interrupter != nullptr && interrupter->stopRequested())
+        return {};
+    grids->velocity->setName("vel");
+    grids->velocity->setVectorType(openvdb::VEC_CONTRAVARIANT_RELATIVE);
+    grids->velocity->setTransform(grids->surface->transform().copy());
+    return WaterVolume(std::move(grids), particleVolume);
+}
+
+WaterVolume::WaterVolume(std::shared_ptr<const WaterGrids> grids, double particleVolume)
+    : grids_(std::move(grids)), particleVolume_(particleVolume) {}
+
+Vec3d WaterVolume::velocity(const Vec3d& x) const {
+    if (empty() || !grids_->velocity)
+        return Vec3d::Zero();
+    const openvdb::Vec3SGrid& grid = *grids_->velocity;
+    const openvdb::Vec3d index = grid.transform().worldToIndex(openvdb::Vec3d(x.x(), x.y(), x.z()));
+    const openvdb::Vec3s v = openvdb::tools::PointSampler::sample(grid.tree(), index);
+    return {v.x(), v.y(), v.z()};
+}
+
+bool WaterVolume::empty() const {
+    return grids_ == nullptr || grids_->surface->tree().activeVoxelCount() == 0;
 }
 
 double WaterVolume::voxelSize() const {
-    return empty() ? 0.0 : grids_->surface->voxelSize().x();
+    return grids_ == nullptr ? 0.0 : grids_->surface->voxelSize().x();
 }
 
 double WaterVolume::volume() const {

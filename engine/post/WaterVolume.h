@@ -18,14 +18,19 @@ struct WaterGrids;
 
 class WaterVolume {
 public:
-    //! The level set of `fluid` (particles placed `spacing` apart at t = 0). Returns an empty
-    //! volume when stopped through `interrupter`, or when there is no water. Throws
-    //! Error(InvalidInput) for settings out of range.
+    //! The level set of `fluid` (particles placed `spacing` apart at t = 0); with no particles,
+    //! empty grids of the right voxel size. Returns a volume without grids when stopped through
+    //! `interrupter`. Throws Error(InvalidInput) for settings out of range.
     static WaterVolume build(const ParticleSet& fluid, double spacing,
                              const SurfaceMeshSettings& settings,
                              Interrupter* interrupter = nullptr);
 
-    bool empty() const { return grids_ == nullptr; }
+    WaterVolume() = default;
+    //! Adopts grids read back from a file (VdbExporter::read).
+    WaterVolume(std::shared_ptr<const WaterGrids> grids, double particleVolume);
+
+    //! No water: nothing built yet, stopped while building, or no particles.
+    bool empty() const;
     double voxelSize() const;
     //! m³ inside the zero level set.
     double volume() const;
@@ -33,10 +38,13 @@ public:
     double particleVolume() const { return particleVolume_; }
     //! Distance to the surface at `x`, m: negative inside the water, clamped to the narrow band.
     double signedDistance(const Vec3d& x) const;
+    //! Velocity of the particle nearest to `x`, m/s, within the surface's narrow band; zero
+    //! elsewhere (a renderer's motion blur reads it at the surface only).
+    Vec3d velocity(const Vec3d& x) const;
     //! The zero level set as a closed mesh, counter-clockwise seen from outside the water.
     TriangleMesh mesh() const;
 
-    //! The OpenVDB grids, for exporters (post/WaterGrids.h); null when empty.
+    //! The OpenVDB grids, for exporters (post/WaterGrids.h); null when stopped while building.
     const WaterGrids* grids() const { return grids_.get(); }
 
 private:
