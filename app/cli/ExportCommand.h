@@ -1,16 +1,16 @@
 #pragma once
-// `airtrap-cli export DIR --format ply --out OUTDIR [--frames A:B]`: one file per cached frame.
-// PLY particles exist now; OBJ meshes and OpenVDB volumes need the post stage and answer "not
-// available yet" without writing anything.
+// `airtrap-cli export DIR --format obj|vdb|ply --out OUTDIR [--frames A:B] [--up y|z]`: the
+// sequences of DESIGN §5, written by the engine's SequenceExporter (the editor's Export dialog
+// uses the same). OBJ and VDB need the post stage's results and refuse, before writing anything,
+// frames that lack them.
 #include "Command.h"
 
 #include <string>
 #include <vector>
 
 namespace airtrap {
-class FrameCache;
-class Interrupter;
-} // namespace airtrap
+struct ExportReport;
+}
 
 namespace airtrap::cli {
 
@@ -20,16 +20,14 @@ public:
     ExitCode run() override;
 
 private:
-    //! The listed frames inside --frames; refuses a range that holds none.
-    std::vector<int> selectFrames(const FrameCache& cache) const;
-    void createOutputFolder() const;
-    //! Writes one frame; false when the frame is damaged (reported, skipped).
-    bool exportFrame(const FrameCache& cache, int frame) const;
+    ExitCode summarise(const ExportReport& report) const;
 
     std::string cacheDir_;
     std::string format_;
     std::string outDir_;
     std::string framesText_;
+    std::string up_ = "y";
+    std::vector<std::string> overrides_;
     bool quiet_ = false;
 };
 

@@ -54,4 +54,19 @@ FrameRange FrameRange::parse(const std::string& text, int maxFrame,
     return range;
 }
 
+std::vector<int> FrameRange::selectListed(const std::vector<int>& listed, const std::string& text,
+                                          const std::string& where) {
+    if (listed.empty())
+        throw Error(ErrorKind::InvalidInput, where + " holds no frames yet");
+    const FrameRange range = parse(text, listed.back(), "the last frame in " + where);
+    std::vector<int> selected;
+    for (const int frame : listed)
+        if (range.contains(frame))
+            selected.push_back(frame);
+    if (selected.empty())
+        throw Error(ErrorKind::InvalidInput,
+                    "--frames " + text + ": " + where + " holds none of these frames");
+    return selected;
+}
+
 } // namespace airtrap::cli

@@ -1,6 +1,7 @@
 #pragma once
 // `--frames A:B` of bake and export: "A:B", "A:", ":B" or a single frame "N".
 #include <string>
+#include <vector>
 
 namespace airtrap::cli {
 
@@ -14,6 +15,11 @@ public:
     //! `maxDescription` says where `maxFrame` comes from ("frames.end_frame", "the cache").
     static FrameRange parse(const std::string& text, int maxFrame,
                             const std::string& maxDescription);
+
+    //! The frames of `listed` (ascending) that `text` selects. Refuses an empty `listed` and a
+    //! range that holds none of them, naming `where` (the cache folder).
+    static std::vector<int> selectListed(const std::vector<int>& listed, const std::string& text,
+                                         const std::string& where);
 
     int first() const { return first_; }
     int last() const { return last_; }

@@ -1,28 +1,32 @@
 #pragma once
-// `airtrap-cli post DIR`: the post stage (free-surface mesh, bubble meshes, sub-grid bubbles)
-// comes in a later version; until then the verb exists and says so, and writes nothing.
+// `airtrap-cli post DIR [--frames A:B] [--set surface_mesh.key=value ...] [--threads N]`: makes
+// the render outputs of a baked cache and keeps them beside it (DIR/post, PostStage), ready for
+// `export` and the editor. Re-running only redoes frames that were re-baked since, or all of them
+// when the render settings changed; no re-simulation ever.
 #include "Command.h"
-#include "core/Error.h"
 
 #include <string>
+#include <vector>
+
+namespace airtrap {
+struct PostReport;
+}
 
 namespace airtrap::cli {
 
 class PostCommand : public Command {
 public:
-    void addTo(CLI::App& parent) override {
-        app_ = parent.add_subcommand("post", "Build meshes from a cache (not available yet)");
-        app_->add_option("DIR", cacheDir_, "Cache folder")->required();
-    }
-
-    ExitCode run() override {
-        throw Error(ErrorKind::NotAvailable,
-                    "post is not available yet: the water and bubble meshes come in a later "
-                    "version (export --format ply writes the particles now)");
-    }
+    void addTo(CLI::App& parent) override;
+    ExitCode run() override;
 
 private:
+    ExitCode summarise(const PostReport& report, const std::string& storeDir) const;
+
     std::string cacheDir_;
+    std::string framesText_;
+    std::vector<std::string> overrides_;
+    int threads_ = 0;
+    bool quiet_ = false;
 };
 
 } // namespace airtrap::cli

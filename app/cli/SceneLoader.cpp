@@ -1,9 +1,9 @@
 #include "SceneLoader.h"
 
+#include "scene/InflowNozzle.h"
 #include "scene/SceneJson.h"
 #include "scene/SceneOverride.h"
 #include "scene/SceneValidator.h"
-#include "scene/InflowNozzle.h"
 
 #include <algorithm>
 #include <cmath>

@@ -13,11 +13,18 @@ public:
 
     Interrupter() = default;
     explicit Interrupter(ProgressCallback onProgress) : onProgress_(std::move(onProgress)) {}
+    //! One part of a parallel operation: it stops when `parent` is asked to, and keeps its own
+    //! stage and progress, so parts running at once do not write over each other's (or the
+    //! parent's) progress. `parent` must outlive it.
+    explicit Interrupter(const Interrupter* parent) : parent_(parent) {}
 
     //! Asks the running operation to stop at its next safe point. Thread-safe.
     void requestStop() { stopRequested_.store(true, std::memory_order_relaxed); }
     void reset() { stopRequested_.store(false, std::memory_order_relaxed); }
-    bool stopRequested() const { return stopRequested_.load(std::memory_order_relaxed); }
+    bool stopRequested() const {
+        return stopRequested_.load(std::memory_order_relaxed) ||
+               (parent_ != nullptr && parent_->stopRequested());
+    }
 
     void start(const std::string& stage) { stage_ = stage; }
     void end() {}
@@ -30,6 +37,7 @@ public:
 
 private:
     std::atomic<bool> stopRequested_{false};
+    const Interrupter* parent_ = nullptr;
     ProgressCallback onProgress_;
     std::string stage_;
 };

@@ -39,14 +39,18 @@ void append(std::uint8_t*& out, const void* value, std::size_t size) {
 } // namespace
 
 std::vector<std::uint8_t> PlyExporter::encode(const ParticleSet& particles,
-                                              const std::vector<std::string>& comments) {
+                                              const std::vector<std::string>& comments, UpAxis up) {
     const std::string head = header(particles.size(), comments);
     std::vector<std::uint8_t> bytes(head.size() + particles.size() * kVertexBytes);
     std::memcpy(bytes.data(), head.data(), head.size());
     std::uint8_t* out = bytes.data() + head.size();
     for (std::size_t i = 0; i < particles.size(); ++i) {
-        append(out, particles.positions[i].data(), 3 * sizeof(float));
-        append(out, particles.velocities[i].data(), 3 * sizeof(float));
+        const Vec3f position =
+            toExportAxes(particles.positions[i].cast<double>(), up).cast<float>();
+        const Vec3f velocity =
+            toExportAxes(particles.velocities[i].cast<double>(), up).cast<float>();
+        append(out, position.data(), 3 * sizeof(float));
+        append(out, velocity.data(), 3 * sizeof(float));
         append(out, &particles.densities[i], sizeof(float));
         append(out, &particles.ids[i], sizeof(std::uint32_t));
     }
@@ -54,8 +58,8 @@ std::vector<std::uint8_t> PlyExporter::encode(const ParticleSet& particles,
 }
 
 void PlyExporter::write(const std::string& path, const ParticleSet& particles,
-                        const std::vector<std::string>& comments) {
-    AtomicFile::write(path, encode(particles, comments));
+                        const std::vector<std::string>& comments, UpAxis up) {
+    AtomicFile::write(path, encode(particles, comments, up));
 }
 
 std::string PlyExporter::fileName(int frame) {

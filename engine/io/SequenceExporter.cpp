@@ -1,0 +1,153 @@
+#include "io/SequenceExporter.h"
+
+#include "core/AtomicFile.h"
+#include "core/Error.h"
+#include "io/ObjExporter.h"
+#include "io/PlyExporter.h"
+#include "io/SequenceName.h"
+#include "io/VdbExporter.h"
+#include "post/FrameSolids.h"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+
+namespace airtrap {
+
+namespace {
+
+bool needsPostResults(ExportFormat format) {
+    return format != ExportFormat::Ply;
+}
+
+std::string frameList(const std::vector<int>& frames) {
+    std::string list;
+    for (std::size_t i = 0; i < frames.size() && i < 10; ++i)
+        list += (list.empty() ? "" : ", ") + std::to_string(frames[i]);
+    return frames.size() > 10 ? list + " and " + std::to_string(frames.size() - 10) + " more"
+                              : list;
+}
+
+} // namespace
+
+SequenceExporter::SequenceExporter(const FrameCache& cache, const Scene& scene,
+                                   ExportOptions options)
+    : cache_(cache), scene_(scene), options_(std::move(options)), solids_(scene),
+      bubbleMesh_(scene.bubbleMesh), store_(PostStore::open(cache.directory())) {}
+
+ExportFormat SequenceExporter::parseFormat(const std::string& name) {
+    if (name == "ply")
+        return ExportFormat::Ply;
+    if (name == "obj")
+        return ExportFormat::Obj;
+    if (name == "vdb")
+        return ExportFormat::Vdb;
+    throw Error(ErrorKind::InvalidInput,
+                "export format '" + name + "' is not known; expected obj, vdb or ply");
+}
+
+void SequenceExporter::checkReady(const std::vector<int>& frames) const {
+    if (!needsPostResults(options_.format))
+        return;
+    const CacheManifest manifest = cache_.manifestSnapshot();
+    std::vector<int> missing;
+    for (const int frame : frames) {
+        const CacheFrameEntry* source = manifest.findFrame(frame);
+        if (source == nullptr || !store_.isCurrent(frame, source->crc32))
+            missing.push_back(frame);
+    }
+    if (!missing.empty())
+        throw Error(ErrorKind::InvalidInput,
+                    "frame(s) " + frameList(missing) + " of " + cache_.directory() +
+                        " have no current water mesh and volume (made by the post stage); run "
+                        "`airtrap-cli post " +
+                        cache_.directory() + "` first");
+}
+
+std::vector<std::string> SequenceExporter::comments(const FrameData& data) const {
+    char time[32];
+    std::snprintf(time, sizeof time, "%.6g", data.state.time);
+    return {"Airtrap " AIRTRAP_VERSION,
+            "frame " + std::to_string(data.state.frame) + ", t = " + time + " s",
+            std::string("metres, ") + (options_.up == UpAxis::Y ? "Y" : "Z") + " up"};
+}
+
+void SequenceExporter::writeObjFiles(const FrameData& data, ExportReport& report) const {
+    const int frame = data.state.frame;
+    const std::vector<std::string> notes = comments(data);
+    const std::string water = sequenceFileName("water", frame, "obj");
+    ObjExporter::write(path(water), {{"water", store_.readFreeSurface(frame)}}, options_.up, notes);
+    report.files.push_back(water);
+    if (scene_.bubbles.enabled) {
+        std::vector<NamedMesh> bubbles;
+        for (const BubbleState& bubble : data.state.bubbles)
+            bubbles.push_back({"bubble_" + std::to_string(bubble.id), bubbleMesh_.build(bubble)});
+        const std::string name = sequenceFileName("bubbles", frame, "obj");
+        ObjExporter::write(path(name), bubbles, options_.up, notes);
+        report.files.push_back(name);
+    }
+    const std::vector<NamedMesh> bodies = FrameSolids(solids_, data.state).meshes();
+    if (!bodies.empty()) {
+        const std::string name = sequenceFileName("bodies", frame, "obj");
+        ObjExporter::write(path(name), bodies, options_.up, notes);
+        report.files.push_back(name);
+    }
+}
+
+bool SequenceExporter::exportFrame(int frame, ExportReport& report) {
+    FrameData data;
+    try {
+        data = cache_.readFrame(frame);
+    } catch (const Error& error) {
+        if (error.kind() != ErrorKind::CacheCorrupt)
+            throw;
+        report.damaged.push_back(error.what());
+        return false;
+    }
+    switch (options_.format) {
+    case ExportFormat::Ply: {
+        const std::string name = PlyExporter::fileName(frame);
+        PlyExporter::write(path(name), data.state.fluid, comments(data), options_.up);
+        report.files.push_back(name);
+        break;
+    }
+    case ExportFormat::Obj:
+        writeObjFiles(data, report);
+        break;
+    case ExportFormat::Vdb: {
+        const std::string name = sequenceFileName("fluid", frame, "vdb");
+        VdbExporter::write(
+            path(name), store_.readVolume(frame), options_.up,
+            {{"frame", std::to_string(frame)}, {"creator", "Airtrap " AIRTRAP_VERSION}});
+        report.files.push_back(name);
+        break;
+    }
+    }
+    return true;
+}
+
+ExportReport SequenceExporter::run(const std::vector<int>& frames, Interrupter& interrupter) {
+    const auto start = std::chrono::steady_clock::now();
+    checkReady(frames);
+    std::error_code error;
+    std::filesystem::create_directories(options_.outDir, error);
+    if (error)
+        throw Error(ErrorKind::Io, AtomicFile::errorMessage("cannot create folder", options_.outDir,
+                                                            error.value()));
+    ExportReport report;
+    interrupter.start("export");
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+        if (interrupter.wasInterrupted(100.0 * double(i) / double(frames.size()))) {
+            report.stopped = true;
+            break;
+        }
+        if (exportFrame(frames[i], report))
+            ++report.framesWritten;
+    }
+    interrupter.end();
+    report.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return report;
+}
+
+} // namespace airtrap

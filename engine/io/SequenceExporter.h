@@ -1,0 +1,71 @@
+#pragma once
+// Writes a baked (and, for meshes and volumes, post-processed) cache as the file sequences
+// renderers read (DESIGN §5), for `airtrap-cli export` and the editor's Export dialog alike:
+//   ply  particles_0001.ply                 water particles (PlyExporter)
+//   obj  water_0001.obj                     the free-surface mesh from the post stage
+//        bubbles_0001.obj                   one oscillating ellipsoid per bubble (paper eqs. 7–10),
+//                                           when the scene simulates bubbles
+//        bodies_0001.obj                    obstacles and rigid bodies, when the scene has any
+//   vdb  fluid_0001.vdb                     surface, density and vel (VdbExporter)
+// Metres; y up, or z up on request. Every file is written atomically.
+#include "cache/FrameCache.h"
+#include "core/Interrupter.h"
+#include "io/UpAxis.h"
+#include "post/OscillatingBubbleMesh.h"
+#include "post/PostStore.h"
+#include "post/SceneSolids.h"
+#include "scene/Scene.h"
+
+#include <string>
+#include <vector>
+
+namespace airtrap {
+
+enum class ExportFormat { Ply, Obj, Vdb };
+
+struct ExportOptions {
+    ExportFormat format = ExportFormat::Obj;
+    std::string outDir;
+    UpAxis up = UpAxis::Y;
+};
+
+struct ExportReport {
+    int framesWritten = 0;
+    std::vector<std::string> files;   //!< names written, in order
+    std::vector<std::string> damaged; //!< "<path>: <reason>" per frame skipped
+    double seconds = 0.0;
+    bool stopped = false;
+};
+
+class SequenceExporter {
+public:
+    //! `scene` is the cache's (its render settings perhaps changed). Loads mesh bodies for OBJ.
+    SequenceExporter(const FrameCache& cache, const Scene& scene, ExportOptions options);
+
+    //! "obj" → ExportFormat::Obj; Error(InvalidInput) listing the formats for anything else.
+    static ExportFormat parseFormat(const std::string& name);
+
+    //! Refuses, before anything is written, frames whose post results an OBJ or VDB export needs
+    //! but which are missing or older than their cache frame (Error(InvalidInput) naming them
+    //! and the command that makes them).
+    void checkReady(const std::vector<int>& frames) const;
+    //! Creates the output folder and writes every frame; a damaged cache frame is skipped and
+    //! recorded. Stops between frames when asked. Error(Io) stops the run.
+    ExportReport run(const std::vector<int>& frames, Interrupter& interrupter);
+
+private:
+    //! The files of one frame; false when the cache frame is damaged.
+    bool exportFrame(int frame, ExportReport& report);
+    std::vector<std::string> comments(const FrameData& data) const;
+    void writeObjFiles(const FrameData& data, ExportReport& report) const;
+    std::string path(const std::string& name) const { return options_.outDir + "/" + name; }
+
+    const FrameCache& cache_;
+    Scene scene_;
+    ExportOptions options_;
+    SceneSolids solids_;
+    OscillatingBubbleMesh bubbleMesh_;
+    PostStore store_;
+};
+
+} // namespace airtrap

@@ -1,0 +1,95 @@
+#include "post/PostStage.h"
+
+#include "core/Error.h"
+#include "post/FrameSolids.h"
+#include "post/FreeSurface.h"
+#include "post/WaterVolume.h"
+#include "scene/SceneJson.h"
+
+#include <atomic>
+#include <chrono>
+#include <tbb/parallel_for.h>
+
+namespace airtrap {
+
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+} // namespace
+
+PostStage::PostStage(const FrameCache& cache, const Scene& scene)
+    : cache_(cache), scene_(scene), solids_(scene), store_(PostStore::open(cache.directory())) {
+    store_.useSettings(settingsOf(scene_));
+}
+
+nlohmann::json PostStage::settingsOf(const Scene& scene) {
+    const nlohmann::json json = sceneToJson(scene);
+    // The spacing sizes the voxels and the margin, so results made at another one are stale too.
+    return {{"surface_mesh", json.at("surface_mesh")},
+            {"particle_spacing", scene.solver.particleSpacing}};
+}
+
+bool PostStage::makeFrame(int frame, Interrupter& interrupter, PostReport& report) {
+    const auto start = std::chrono::steady_clock::now();
+    const CacheManifest manifest = cache_.manifestSnapshot();
+    const CacheFrameEntry* source = manifest.findFrame(frame);
+    if (source == nullptr)
+        throw Error(ErrorKind::InvalidInput,
+                    "frame " + std::to_string(frame) + " is not in " + cache_.directory());
+    if (store_.isCurrent(frame, source->crc32)) {
+        const std::lock_guard lock(reportMutex_);
+        ++report.alreadyCurrent;
+        return true;
+    }
+    FrameData data;
+    try {
+        data = cache_.readFrame(frame);
+    } catch (const Error& error) {
+        if (error.kind() != ErrorKind::CacheCorrupt)
+            throw;
+        const std::lock_guard lock(reportMutex_);
+        report.damaged.push_back(error.what());
+        return false;
+    }
+    const double spacing = scene_.solver.particleSpacing;
+    Interrupter part(&interrupter);
+    const WaterVolume water =
+        WaterVolume::build(data.state.fluid, spacing, scene_.surfaceMesh, &part);
+    if (part.stopRequested())
+        return false;
+    const TriangleMesh surface = freeSurfaceOnly(water.mesh(), FrameSolids(solids_, data.state),
+                                                 scene_.surfaceMesh.margin * spacing);
+    PostFrameEntry entry{frame, source->crc32, surface.triangleCount(), secondsSince(start)};
+    store_.writeFrame(entry, surface, water);
+    const std::lock_guard lock(reportMutex_);
+    ++report.made;
+    report.secondsPerFrame += entry.seconds;
+    return true;
+}
+
+PostReport PostStage::run(const std::vector<int>& frames, Interrupter& interrupter) {
+    const auto start = std::chrono::steady_clock::now();
+    PostReport report;
+    interrupter.start("post");
+    std::atomic<int> done{0};
+    std::mutex progressMutex;
+    tbb::parallel_for(std::size_t(0), frames.size(), [&](std::size_t i) {
+        if (interrupter.stopRequested())
+            return;
+        makeFrame(frames[i], interrupter, report);
+        const int finished = ++done;
+        const std::lock_guard lock(progressMutex);
+        interrupter.wasInterrupted(100.0 * finished / double(frames.size()));
+    });
+    interrupter.end();
+    report.stopped = interrupter.stopRequested() && done < int(frames.size());
+    report.seconds = secondsSince(start);
+    if (report.made > 0)
+        report.secondsPerFrame /= report.made;
+    return report;
+}
+
+} // namespace airtrap

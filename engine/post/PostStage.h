@@ -1,0 +1,55 @@
+#pragma once
+// `airtrap-cli post` and the editor's Post action (DESIGN §2: Scene → Simulation → FrameCache →
+// Post → Exporters): for each chosen cache frame, the water volume and its free-surface mesh
+// (paper §4.1), stored beside the cache (PostStore). Frames run in parallel; a frame whose stored
+// result is current is skipped, so a second run after a longer bake only does the new frames,
+// and a run after a settings change redoes them all. Stops between frames and inside OpenVDB's
+// tools when asked; what finished is kept.
+#include "cache/FrameCache.h"
+#include "core/Interrupter.h"
+#include "post/PostStore.h"
+#include "post/SceneSolids.h"
+#include "scene/Scene.h"
+
+#include <string>
+#include <vector>
+
+namespace airtrap {
+
+struct PostReport {
+    int made = 0;                     //!< frames whose results were made in this run
+    int alreadyCurrent = 0;           //!< frames skipped: their stored results were current
+    std::vector<std::string> damaged; //!< "<path>: <reason>" per cache frame that failed its checks
+    double seconds = 0.0;             //!< wall time of the run
+    double secondsPerFrame = 0.0;     //!< mean wall time of a frame made (threads included)
+    bool stopped = false;
+};
+
+class PostStage {
+public:
+    //! `scene` supplies the render settings and the solids; usually the cache's own scene,
+    //! perhaps with its render settings changed. Loads mesh bodies (Error(InvalidInput) when one
+    //! cannot be read) and opens the store (Error(CacheCorrupt) when post.json is damaged).
+    PostStage(const FrameCache& cache, const Scene& scene);
+
+    //! The render settings as the store records them.
+    static nlohmann::json settingsOf(const Scene& scene);
+
+    //! Makes the results of `frames` (listed cache frames). Progress goes to `interrupter` as the
+    //! share of `frames` done, under the stage name "post". Error(Io) stops the run.
+    PostReport run(const std::vector<int>& frames, Interrupter& interrupter);
+
+    const PostStore& store() const { return store_; }
+
+private:
+    //! False when the cache frame is damaged (recorded in `report`) or the run was stopped.
+    bool makeFrame(int frame, Interrupter& interrupter, PostReport& report);
+
+    const FrameCache& cache_;
+    Scene scene_;
+    SceneSolids solids_;
+    PostStore store_;
+    std::mutex reportMutex_;
+};
+
+} // namespace airtrap

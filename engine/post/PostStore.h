@@ -1,0 +1,75 @@
+#pragma once
+// The post stage's results, kept beside the cache in `<cache>/post/` (docs/CACHE_FORMAT.md): per
+// frame the free-surface mesh (`water_0001.atm`, MeshFile) and the water volume
+// (`fluid_0001.vdb`, VdbExporter), listed in `post.json` with the checksum of the cache frame
+// they were made from. post.json also holds the settings they were made with. A result whose
+// source frame was re-baked, or whose settings changed, is stale: not current, made again by the
+// next post run. Files are written atomically and listed only once complete, as the cache's own
+// frames are, so a stopped run loses nothing it finished.
+#include "post/WaterVolume.h"
+#include "rigid/TriangleMesh.h"
+
+#include <cstdint>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace airtrap {
+
+struct PostFrameEntry {
+    int frame = 0;
+    std::uint32_t sourceCrc32 = 0; //!< of the cache frame it was made from
+    std::uint64_t triangles = 0;   //!< of the free-surface mesh
+    double seconds = 0.0;          //!< wall time it took
+};
+
+class PostStore {
+public:
+    static constexpr int kFormatVersion = 1;
+    static constexpr const char* kFolderName = "post";
+    static constexpr const char* kManifestName = "post.json";
+
+    //! The store of the cache in `cacheDir`; empty (nothing listed, no folder yet) when no post
+    //! run has finished a frame. A damaged post.json → Error(CacheCorrupt) naming it.
+    static PostStore open(const std::string& cacheDir);
+
+    PostStore(PostStore&& other) noexcept;
+    PostStore(const PostStore&) = delete;
+    PostStore& operator=(const PostStore&) = delete;
+
+    //! Adopts `settings` (the render settings as JSON). When they differ from the listed results'
+    //! settings, every listed frame is unlisted: made with other settings, it is stale.
+    void useSettings(const nlohmann::json& settings);
+    const nlohmann::json& settings() const { return settings_; }
+
+    //! True when `frame` is listed and was made from the cache frame with this checksum.
+    bool isCurrent(int frame, std::uint32_t sourceCrc32) const;
+    bool hasFrame(int frame) const;
+    std::vector<int> frames() const;
+
+    //! Writes both files, then lists the frame. Safe to call from several threads at once.
+    //! Error(Io) (disk full, permission denied) leaves the frame unlisted.
+    void writeFrame(const PostFrameEntry& entry, const TriangleMesh& freeSurface,
+                    const WaterVolume& volume);
+    //! Listed results; a damaged file → Error(CacheCorrupt) naming it, an unlisted frame →
+    //! Error(InvalidInput) saying to run `post`.
+    TriangleMesh readFreeSurface(int frame) const;
+    WaterVolume readVolume(int frame) const;
+
+    const std::string& directory() const { return dir_; }
+    std::string manifestPath() const;
+
+private:
+    PostStore(std::string dir, nlohmann::json settings, std::vector<PostFrameEntry> frames);
+    const PostFrameEntry* find(int frame) const;
+    void requireListed(int frame) const;
+    void writeManifest() const;
+
+    std::string dir_;
+    nlohmann::json settings_;
+    std::vector<PostFrameEntry> frames_; //!< sorted by frame
+    mutable std::mutex mutex_;
+};
+
+} // namespace airtrap

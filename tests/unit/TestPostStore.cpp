@@ -1,0 +1,88 @@
+// The post stage's store beside a cache: meshes round-trip exactly (to float), a damaged mesh
+// file is refused by name, results are current only for the cache frame they were made from,
+// other settings make every result stale, and a reopened store lists what was written.
+#include "core/Error.h"
+#include "post/MeshFile.h"
+#include "post/PostStore.h"
+#include "post/ShapeTessellation.h"
+
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace airtrap;
+
+namespace {
+
+TriangleMesh someMesh() {
+    return tessellateSphere(0.25).transformed(1.0, Quatd::Identity(), Vec3d(0.5, 1.0, 0.25));
+}
+
+void expectCorrupt(const std::vector<std::uint8_t>& bytes, const char* what) {
+    try {
+        MeshFile::decode(bytes, "/c/post/water_0007.atm");
+        QFAIL(what);
+    } catch (const Error& error) {
+        QCOMPARE(int(error.kind()), int(ErrorKind::CacheCorrupt));
+        QVERIFY2(std::string(error.what()).starts_with("/c/post/water_0007.atm: "), error.what());
+    }
+}
+
+} // namespace
+
+class TestPostStore : public QObject {
+    Q_OBJECT
+
+private Q_SLOTS:
+    void aMeshRoundTripsToFloatPrecision() {
+        const TriangleMesh mesh = someMesh();
+        const TriangleMesh back = MeshFile::decode(MeshFile::encode(mesh), "mesh");
+        QCOMPARE(back.triangles, mesh.triangles);
+        QCOMPARE(back.vertices.size(), mesh.vertices.size());
+        for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
+            QVERIFY((back.vertices[v] - mesh.vertices[v]).norm() < 1e-7);
+        QCOMPARE(MeshFile::decode(MeshFile::encode({}), "empty").triangleCount(), std::size_t(0));
+    }
+
+    void aDamagedMeshFileIsRefused() {
+        const std::vector<std::uint8_t> good = MeshFile::encode(someMesh());
+        std::vector<std::uint8_t> truncated(good.begin(), good.end() - 9);
+        expectCorrupt(truncated, "truncated");
+        std::vector<std::uint8_t> flipped = good;
+        flipped[100] ^= 0x10;
+        expectCorrupt(flipped, "one bit flipped");
+        std::vector<std::uint8_t> foreign = good;
+        foreign[0] = 'X';
+        expectCorrupt(foreign, "not a mesh file");
+    }
+
+    void resultsAreCurrentForTheirSourceFrameAndSettings() {
+        QTemporaryDir cache;
+        const std::string dir = cache.path().toStdString();
+        const nlohmann::json settings = {{"surface_mesh", {{"smoothing", 4}}}};
+        const WaterVolume none = WaterVolume::build(ParticleSet(), 0.02, {});
+        {
+            PostStore store = PostStore::open(dir);
+            QVERIFY(store.frames().empty());
+            store.useSettings(settings);
+            store.writeFrame({3, 0xABCDu, someMesh().triangleCount(), 0.5}, someMesh(), none);
+            store.writeFrame({1, 0x1234u, 0, 0.25}, TriangleMesh(), none);
+        }
+        PostStore store = PostStore::open(dir);
+        QCOMPARE(store.frames(), (std::vector<int>{1, 3}));
+        QVERIFY(store.isCurrent(3, 0xABCDu));
+        QVERIFY(!store.isCurrent(3, 0xABCEu)); // the frame was baked again since
+        QVERIFY(!store.isCurrent(2, 0xABCDu));
+        QCOMPARE(store.readFreeSurface(3).triangleCount(), someMesh().triangleCount());
+        QVERIFY(store.readVolume(1).empty());
+        QVERIFY_THROWS_EXCEPTION(Error, store.readFreeSurface(2));
+
+        store.useSettings(settings);
+        QCOMPARE(store.frames().size(), std::size_t(2));
+        store.useSettings({{"surface_mesh", {{"smoothing", 8}}}});
+        QVERIFY(store.frames().empty());
+        QVERIFY(PostStore::open(dir).frames().empty()); // and so says post.json
+    }
+};
+
+QTEST_APPLESS_MAIN(TestPostStore)
+#include "TestPostStore.moc"
