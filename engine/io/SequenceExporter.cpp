@@ -2,6 +2,7 @@
 
 #include "core/AtomicFile.h"
 #include "core/Error.h"
+#include "io/BubblePoints.h"
 #include "io/ObjExporter.h"
 #include "io/PlyExporter.h"
 #include "io/SequenceName.h"
@@ -94,6 +95,22 @@ void SequenceExporter::writeObjFiles(const FrameData& data, ExportReport& report
     }
 }
 
+void SequenceExporter::writePlyFiles(const FrameData& data, ExportReport& report) const {
+    const int frame = data.state.frame;
+    const std::string particles = PlyExporter::fileName(frame);
+    PlyExporter::write(path(particles), data.state.fluid, comments(data), options_.up);
+    report.files.push_back(particles);
+    if (!scene_.bubbles.enabled)
+        return;
+    std::vector<BubblePoint> points;
+    for (const BubbleState& bubble : data.state.bubbles)
+        points.push_back({bubble.body.position, bubble.radius, bubble.body.linearVelocity,
+                          bubble.age, bubble.id});
+    const std::string bubbles = sequenceFileName("bubbles", frame, "ply");
+    BubblePoints::write(path(bubbles), points, comments(data), options_.up);
+    report.files.push_back(bubbles);
+}
+
 bool SequenceExporter::exportFrame(int frame, ExportReport& report) {
     FrameData data;
     try {
@@ -105,12 +122,9 @@ bool SequenceExporter::exportFrame(int frame, ExportReport& report) {
         return false;
     }
     switch (options_.format) {
-    case ExportFormat::Ply: {
-        const std::string name = PlyExporter::fileName(frame);
-        PlyExporter::write(path(name), data.state.fluid, comments(data), options_.up);
-        report.files.push_back(name);
+    case ExportFormat::Ply:
+        writePlyFiles(data, report);
         break;
-    }
     case ExportFormat::Obj:
         writeObjFiles(data, report);
         break;

@@ -2,6 +2,8 @@
 // Writes a baked (and, for meshes and volumes, post-processed) cache as the file sequences
 // renderers read (DESIGN §5), for `airtrap-cli export` and the editor's Export dialog alike:
 //   ply  particles_0001.ply                 water particles (PlyExporter)
+//        bubbles_0001.ply                   bubbles as points for instancing (BubblePoints), when
+//                                           the scene simulates bubbles
 //   obj  water_0001.obj                     the free-surface mesh from the post stage
 //        bubbles_0001.obj                   one oscillating ellipsoid per bubble (paper eqs. 7–10),
 //                                           when the scene simulates bubbles
@@ -58,6 +60,7 @@ private:
     bool exportFrame(int frame, ExportReport& report);
     std::vector<std::string> comments(const FrameData& data) const;
     void writeObjFiles(const FrameData& data, ExportReport& report) const;
+    void writePlyFiles(const FrameData& data, ExportReport& report) const;
     std::string path(const std::string& name) const { return options_.outDir + "/" + name; }
 
     const FrameCache& cache_;

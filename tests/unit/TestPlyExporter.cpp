@@ -1,6 +1,7 @@
 // PLY particle export: the file is read back by an independent little parser (header lines, then
 // the binary body by the declared properties) and compared value for value.
 #include "core/Error.h"
+#include "io/BubblePoints.h"
 #include "io/PlyExporter.h"
 #include "unit/CacheTestData.h"
 
@@ -67,10 +68,10 @@ PlyFile parsePly(const std::vector<std::uint8_t>& bytes) {
 }
 
 template <typename T>
-T valueAt(const PlyFile& ply, std::size_t vertex, std::size_t property) {
+T valueAt(const PlyFile& ply, std::size_t vertex, std::size_t property,
+          std::size_t stride = PlyExporter::kVertexBytes) {
     T value;
-    std::memcpy(&value, ply.body.data() + vertex * PlyExporter::kVertexBytes + property * 4,
-                sizeof value);
+    std::memcpy(&value, ply.body.data() + vertex * stride + property * 4, sizeof value);
     return value;
 }
 
@@ -116,6 +117,40 @@ private Q_SLOTS:
     void commentsCannotBreakTheHeader() {
         const PlyFile ply = parsePly(PlyExporter::encode(ParticleSet{}, {"two\nlines"}));
         QCOMPARE(ply.comments, (std::vector<std::string>{"two lines"}));
+    }
+
+    void zUpTurnsPositionsAndVelocities() {
+        ParticleSet particles;
+        particles.push(Vec3f(1, 2, 3), Vec3f(4, 5, 6), 1000.0f, 7);
+        const PlyFile ply = parsePly(PlyExporter::encode(particles, {}, UpAxis::Z));
+        const std::vector<float> expected = {1, -3, 2, 4, -6, 5};
+        for (std::size_t property = 0; property < expected.size(); ++property)
+            QCOMPARE(valueAt<float>(ply, 0, property), expected[property]);
+    }
+
+    void bubblesArePointsWithScaleVelocityAgeAndId() {
+        const std::vector<BubblePoint> bubbles = {
+            {Vec3d(0.1, 0.2, 0.3), 0.015, Vec3d(0.0, 0.25, -0.1), 1.5, 42},
+            {Vec3d(0.4, 0.5, 0.6), 0.02, Vec3d::Zero(), 0.0, 7}};
+        const PlyFile ply = parsePly(BubblePoints::encode(bubbles, {"frame 9"}, UpAxis::Y));
+        const std::vector<std::pair<std::string, std::string>> expected = {
+            {"float", "x"},      {"float", "y"},   {"float", "z"},
+            {"float", "pscale"}, {"float", "vx"},  {"float", "vy"},
+            {"float", "vz"},     {"float", "age"}, {"uint", "id"}};
+        QCOMPARE(ply.properties, expected);
+        QCOMPARE(ply.vertexCount, std::size_t(2));
+        QCOMPARE(ply.body.size(), 2 * BubblePoints::kVertexBytes);
+        const std::size_t stride = BubblePoints::kVertexBytes;
+        for (std::size_t i = 0; i < bubbles.size(); ++i) {
+            for (int axis = 0; axis < 3; ++axis) {
+                QCOMPARE(valueAt<float>(ply, i, axis, stride), float(bubbles[i].position[axis]));
+                QCOMPARE(valueAt<float>(ply, i, 4 + axis, stride),
+                         float(bubbles[i].velocity[axis]));
+            }
+            QCOMPARE(valueAt<float>(ply, i, 3, stride), float(bubbles[i].radius));
+            QCOMPARE(valueAt<float>(ply, i, 7, stride), float(bubbles[i].age));
+            QCOMPARE(valueAt<std::uint32_t>(ply, i, 8, stride), bubbles[i].id);
+        }
     }
 
     void fileNamesArePaddedToFourDigits() {

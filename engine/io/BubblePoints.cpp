@@ -1,0 +1,56 @@
+#include "io/BubblePoints.h"
+
+#include "core/AtomicFile.h"
+
+#include <bit>
+#include <cstring>
+
+namespace airtrap {
+
+static_assert(std::endian::native == std::endian::little,
+              "PLY bodies are written little-endian; a big-endian host needs byte swapping");
+
+namespace {
+
+std::string header(std::size_t count, const std::vector<std::string>& comments) {
+    std::string text = "ply\nformat binary_little_endian 1.0\n";
+    for (std::string comment : comments) {
+        for (char& c : comment)
+            if (c == '\n' || c == '\r')
+                c = ' ';
+        text += "comment " + comment + "\n";
+    }
+    text += "element vertex " + std::to_string(count) + "\n";
+    for (const char* name : {"x", "y", "z", "pscale", "vx", "vy", "vz", "age"})
+        text += std::string("property float ") + name + "\n";
+    return text + "property uint id\nend_header\n";
+}
+
+} // namespace
+
+std::vector<std::uint8_t> BubblePoints::encode(const std::vector<BubblePoint>& points,
+                                               const std::vector<std::string>& comments,
+                                               UpAxis up) {
+    const std::string head = header(points.size(), comments);
+    std::vector<std::uint8_t> bytes(head.size() + points.size() * kVertexBytes);
+    std::memcpy(bytes.data(), head.data(), head.size());
+    std::uint8_t* out = bytes.data() + head.size();
+    for (const BubblePoint& point : points) {
+        const Vec3f position = toExportAxes(point.position, up).cast<float>();
+        const Vec3f velocity = toExportAxes(point.velocity, up).cast<float>();
+        const float values[8] = {position.x(), position.y(), position.z(), float(point.radius),
+                                 velocity.x(), velocity.y(), velocity.z(), float(point.age)};
+        std::memcpy(out, values, sizeof values);
+        out += sizeof values;
+        std::memcpy(out, &point.id, sizeof point.id);
+        out += sizeof point.id;
+    }
+    return bytes;
+}
+
+void BubblePoints::write(const std::string& path, const std::vector<BubblePoint>& points,
+                         const std::vector<std::string>& comments, UpAxis up) {
+    AtomicFile::write(path, encode(points, comments, up));
+}
+
+} // namespace airtrap
