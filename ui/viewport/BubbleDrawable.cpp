@@ -6,12 +6,10 @@
 
 #include <QOpenGLContext>
 #include <QOpenGLExtraFunctions>
+#include <cstddef>
 #include <cstdint>
 
 namespace airtrap {
-
-// Instances go to the GPU as they are: centre and radius, four floats.
-static_assert(sizeof(QVector4D) == 4 * sizeof(float));
 
 namespace {
 
@@ -22,15 +20,21 @@ const QColor kBubbleColour(190, 198, 245);
 const char* const kVertexShader = R"(#version 330 core
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
-layout(location = 2) in vec4 bubble; // centre, radius
+layout(location = 2) in vec3 centre;
+layout(location = 3) in vec4 rotation; // unit quaternion x y z w
+layout(location = 4) in vec3 axes;     // semi-axes, the third along the velocity
 uniform mat4 view;
 uniform mat4 projection;
 out vec3 eyePosition;
 out vec3 eyeNormal;
+vec3 rotate(vec4 q, vec3 v) {
+    return v + 2.0 * cross(q.xyz, cross(q.xyz, v) + q.w * v);
+}
 void main() {
-    vec4 eye = view * vec4(bubble.xyz + bubble.w * position, 1.0);
+    vec4 eye = view * vec4(centre + rotate(rotation, axes * position), 1.0);
     eyePosition = eye.xyz;
-    eyeNormal = mat3(view) * normal; // the view is rigid: no inverse transpose needed
+    // An ellipsoid's normals scale by the inverse axes; the view is rigid.
+    eyeNormal = mat3(view) * rotate(rotation, normal / axes);
     gl_Position = projection * eye;
 }
 )";
@@ -69,13 +73,20 @@ QColor BubbleDrawable::colour() {
     return kBubbleColour;
 }
 
+void BubbleDrawable::setShape(const BubbleMeshSettings& settings) {
+    shape_ = OscillatingBubbleMesh(settings);
+}
+
 void BubbleDrawable::setBubbles(const std::vector<BubbleState>& bubbles) {
     instances_.clear();
     instances_.reserve(bubbles.size());
     for (const BubbleState& bubble : bubbles) {
         const Vec3d& centre = bubble.body.position;
-        instances_.emplace_back(float(centre.x()), float(centre.y()), float(centre.z()),
-                                float(bubble.radius));
+        const Quatd turn = OscillatingBubbleMesh::alignment(bubble.body.linearVelocity);
+        const Vec3d axes = shape_.semiAxes(bubble.radius, bubble.age);
+        instances_.push_back({{float(centre.x()), float(centre.y()), float(centre.z())},
+                              {float(turn.x()), float(turn.y()), float(turn.z()), float(turn.w())},
+                              {float(axes.x()), float(axes.y()), float(axes.z())}});
     }
     dirty_ = true;
 }
@@ -108,16 +119,24 @@ void BubbleDrawable::uploadSphere() {
                               reinterpret_cast<const void*>(std::intptr_t(sizeof(QVector3D))));
     sphereBuffer_.release();
     instanceBuffer_.bind();
-    gl->glEnableVertexAttribArray(2);
-    gl->glVertexAttribPointer(2, 4, GL_FLOAT, GL_FALSE, GLsizei(sizeof(QVector4D)), nullptr);
-    gl->glVertexAttribDivisor(2, 1); // one centre and radius per sphere, not per vertex
+    const auto instanceStride = GLsizei(sizeof(Instance));
+    const int sizes[3] = {3, 4, 3};
+    const std::size_t offsets[3] = {offsetof(Instance, centre), offsetof(Instance, rotation),
+                                    offsetof(Instance, axes)};
+    for (int i = 0; i < 3; ++i) {
+        gl->glEnableVertexAttribArray(GLuint(2 + i));
+        gl->glVertexAttribPointer(GLuint(2 + i), sizes[i], GL_FLOAT, GL_FALSE, instanceStride,
+                                  reinterpret_cast<const void*>(std::intptr_t(offsets[i])));
+        gl->glVertexAttribDivisor(GLuint(2 + i), 1); // one per bubble, not per vertex
+    }
     instanceBuffer_.release();
 }
 
 void BubbleDrawable::uploadInstances() {
+    static_assert(sizeof(Instance) == 10 * sizeof(float), "instances go to the GPU as they are");
     dirty_ = false;
     instanceBuffer_.bind();
-    instanceBuffer_.allocate(instances_.data(), int(instances_.size() * sizeof(QVector4D)));
+    instanceBuffer_.allocate(instances_.data(), int(instances_.size() * sizeof(Instance)));
     instanceBuffer_.release();
     uploadedCount_ = int(instances_.size());
 }

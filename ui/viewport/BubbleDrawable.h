@@ -1,9 +1,12 @@
 #pragma once
-// The trapped air bubbles of a cached frame as lit spheres in a pale ice blue, apart from the
-// water's speed colours and from the bodies' motion colours. Every bubble is one instance of a
-// unit sphere scaled by its radius, so a frame with thousands of bubbles is still one draw call;
-// the sphere is uploaded once, the centres and radii again whenever the frame changes.
+// The trapped air bubbles of a cached frame in a pale ice blue, apart from the water's speed
+// colours and from the bodies' motion colours, shaped as they are exported: the oscillating
+// ellipsoid of paper eqs. 7–10 (OscillatingBubbleMesh), stretched along the bubble's velocity and
+// wobbling after its birth. Every bubble is one instance of a unit sphere, turned and scaled by
+// its ellipsoid's axes, so a frame with thousands of bubbles is still one draw call; the sphere
+// is uploaded once, the instances again whenever the frame changes.
 #include "bubbles/BubbleState.h"
+#include "post/OscillatingBubbleMesh.h"
 #include "viewport/Drawable.h"
 
 #include <QColor>
@@ -21,6 +24,9 @@ public:
     BubbleDrawable();
     ~BubbleDrawable() override;
 
+    //! How the bubbles wobble (the scene's bubble_mesh section); applies from the next
+    //! setBubbles().
+    void setShape(const BubbleMeshSettings& settings);
     //! Shows these bubbles (a frame's SimulationState::bubbles); empty shows none.
     void setBubbles(const std::vector<BubbleState>& bubbles);
     //! Bubbles drawn by the next paint.
@@ -45,7 +51,16 @@ private:
     QOpenGLBuffer instanceBuffer_;
     QOpenGLVertexArrayObject vertexArray_;
     int sphereVertexCount_ = 0;
-    std::vector<QVector4D> instances_; //!< centre (m) and radius (m) of each bubble
+    //! Per bubble: centre (m), rotation (x y z w, unit sphere's z onto the velocity), semi-axes
+    //! (m).
+    struct Instance {
+        float centre[3];
+        float rotation[4];
+        float axes[3];
+    };
+
+    OscillatingBubbleMesh shape_{BubbleMeshSettings{}};
+    std::vector<Instance> instances_;
     int uploadedCount_ = 0;
     bool dirty_ = false;
 };

@@ -74,6 +74,8 @@ void ViewportWidget::setScene(const Scene& scene) {
     boxes_.setGizmos(gizmos_);
     bodies_ = SceneBodies(scene, meshes_);
     placeBodies();
+    bubbleDrawable_.setShape(scene.bubbleMesh);
+    bubbleDrawable_.setBubbles(frame_ ? frame_->state.bubbles : std::vector<BubbleState>());
     updateParticleLook();
     if (first) {
         frameAll();
