@@ -88,6 +88,16 @@ void EditorActions::makeSimulationActions() {
     stop->setIcon(standardIcon(QStyle::SP_MediaStop));
     clearCache =
         make("clearCacheAction", tr("&Clear Cache…"), tr("Delete the baked frames of this scene"));
+    post = make("postAction", tr("Make Render &Outputs"),
+                tr("Build the water's free-surface mesh and volume of every cached frame, with "
+                   "the Surface mesh settings (kept beside the cache)"));
+    post->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_M));
+    exportSequences = make("exportAction", tr("&Export…"),
+                           tr("Write OBJ, VDB or PLY sequences of the cached frames for a "
+                              "renderer"));
+    exportSequences->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_E));
+    cancelRenderOutputs = make("cancelRenderOutputsAction", tr("Cancel"),
+                               tr("Stop making render outputs; finished frames are kept"));
 }
 
 void EditorActions::makeViewActions() {

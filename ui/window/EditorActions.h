@@ -33,6 +33,9 @@ public:
     QAction* resume;
     QAction* stop;
     QAction* clearCache;
+    QAction* post;
+    QAction* exportSequences;
+    QAction* cancelRenderOutputs;
     // View
     QAction* frameAll;
     QAction* showGrid;

@@ -1,6 +1,7 @@
 #include "window/MainWindow.h"
 
 #include "cache/FrameCache.h"
+#include "controller/RenderOutputController.h"
 #include "controller/SimulationController.h"
 #include "core/Error.h"
 #include "document/SceneDocument.h"
@@ -18,6 +19,7 @@
 #include "window/EditorSettings.h"
 #include "window/LogPanel.h"
 #include "window/RecentFiles.h"
+#include "window/RenderSession.h"
 #include "window/StatusBarFields.h"
 
 #include <QAction>
@@ -93,6 +95,11 @@ void MainWindow::createParts() {
     bakeSession_ = new BakeSession(*document_, *controller_, *timeline_, *loader_, *log_,
                                    *statusFields_, *actions_, this);
     bakeSession_->setCacheDirectoryProvider([this] { return cacheDirectory(); });
+    renderController_ = new RenderOutputController(this);
+    renderSession_ =
+        new RenderSession(*document_, *renderController_, *log_, *actions_, *statusBar(), this);
+    renderSession_->setCacheDirectoryProvider([this] { return cacheDirectory(); });
+    renderSession_->setLastCachedFrameProvider([this] { return bakeSession_->lastCachedFrame(); });
 }
 
 QDockWidget* MainWindow::addDock(QWidget* content, const QString& title, const char* objectName,
@@ -151,6 +158,8 @@ void MainWindow::createMenus() {
     fileMenu_->addAction(actions_->saveScene);
     fileMenu_->addAction(actions_->saveSceneAs);
     fileMenu_->addSeparator();
+    fileMenu_->addAction(actions_->exportSequences);
+    fileMenu_->addSeparator();
     fileMenu_->addAction(actions_->quit);
 
     QMenu* edit = menuBar()->addMenu(tr("&Edit"));
@@ -174,6 +183,8 @@ void MainWindow::createMenus() {
     simulation->addActions({actions_->bake, actions_->pause, actions_->resume, actions_->stop});
     simulation->addSeparator();
     simulation->addAction(actions_->clearCache);
+    simulation->addSeparator();
+    simulation->addAction(actions_->post);
 
     QMenu* playback = menuBar()->addMenu(tr("&Playback"));
     playback->addActions({actions_->playPause, actions_->stepBackward, actions_->stepForward,
@@ -224,7 +235,10 @@ void MainWindow::connectDocument() {
     connect(document_.get(), &SceneDocument::reset, this, &MainWindow::onDocumentChanged);
     connect(bakeSession_, &BakeSession::statusMessage, this,
             [this](const QString& text) { statusBar()->showMessage(text, 5000); });
+    connect(renderSession_, &RenderSession::statusMessage, this,
+            [this](const QString& text) { statusBar()->showMessage(text, 5000); });
     connect(bakeSession_, &BakeSession::cachedFramesChanged, this, [this] {
+        renderSession_->updateActions();
         onTimelineFrameChanged(timeline_->currentFrame());
         Q_EMIT cachedFramesChanged();
     });

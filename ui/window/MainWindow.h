@@ -22,6 +22,8 @@ class FrameLoader;
 class LogPanel;
 class ParameterPanel;
 class RecentFiles;
+class RenderOutputController;
+class RenderSession;
 class SceneDocument;
 class SceneTreePanel;
 class SimulationController;
@@ -44,6 +46,8 @@ public:
     ParameterPanel* parameterPanel() const { return parameterPanel_; }
     TimelineWidget* timeline() const { return timeline_; }
     SimulationController* controller() const { return controller_; }
+    RenderOutputController* renderController() const { return renderController_; }
+    RenderSession* renderSession() const { return renderSession_; }
     FrameLoader* frameLoader() const { return loader_; }
     LogPanel* log() const { return log_; }
     StatusBarFields* statusFields() const { return statusFields_; }
@@ -127,6 +131,8 @@ private:
     ParameterPanel* parameterPanel_ = nullptr;
     TimelineWidget* timeline_ = nullptr;
     SimulationController* controller_ = nullptr;
+    RenderOutputController* renderController_ = nullptr;
+    RenderSession* renderSession_ = nullptr;
     FrameLoader* loader_ = nullptr;
     BakeSession* bakeSession_ = nullptr;
     LogPanel* log_ = nullptr;
