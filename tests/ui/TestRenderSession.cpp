@@ -6,6 +6,7 @@
 #include "controller/RenderOutputController.h"
 #include "controller/SimulationController.h"
 #include "post/PostStore.h"
+#include "viewport/ViewportWidget.h"
 #include "window/EditorActions.h"
 #include "window/ExportDialog.h"
 #include "window/MainWindow.h"
@@ -55,6 +56,14 @@ private Q_SLOTS:
         const PostStore store = PostStore::open(window.cacheDirectory().toStdString());
         QCOMPARE(store.frames(), (std::vector<int>{1, 2, 3, 4}));
         QCOMPARE(store.settings()["surface_mesh"]["smoothing"].get<int>(), 3);
+        // The frame on screen gets its water surface; another frame gets its own.
+        window.showFrame(3);
+        QTRY_VERIFY_WITH_TIMEOUT(window.viewport()->surfaceTriangleCount() > 0, 10000);
+        QCOMPARE(window.viewport()->surfaceTriangleCount(),
+                 int(store.readFreeSurface(3).triangleCount()));
+        window.actions().showSurface->setChecked(false);
+        QCOMPARE(window.viewport()->surfaceTriangleCount(), 0);
+        window.actions().showSurface->setChecked(true);
 
         RenderRequest request;
         request.formats = {ExportFormat::Obj};

@@ -130,6 +130,16 @@ void ViewportWidget::setShowWater(bool show) {
     update();
 }
 
+void ViewportWidget::setWaterSurface(std::shared_ptr<const TriangleMesh> mesh) {
+    surface_.setMesh(std::move(mesh));
+    update();
+}
+
+void ViewportWidget::setShowSurface(bool show) {
+    showSurface_ = show;
+    update();
+}
+
 void ViewportWidget::setBubblesThroughWater(bool through) {
     bubblesThroughWater_ = through;
     update();
@@ -181,8 +191,8 @@ float ViewportWidget::aspectRatio() const {
 
 // --- OpenGL --------------------------------------------------------------------------------------
 
-std::array<Drawable*, 6> ViewportWidget::drawables() {
-    return {&bubbleDrawable_, &bodyDrawable_, &particles_, &grid_, &axes_, &boxes_};
+std::array<Drawable*, 7> ViewportWidget::drawables() {
+    return {&bubbleDrawable_, &bodyDrawable_, &particles_, &surface_, &grid_, &axes_, &boxes_};
 }
 
 void ViewportWidget::initializeGL() {
@@ -254,6 +264,9 @@ void ViewportWidget::drawScene() {
     if (hasScene_ && showGizmos_) {
         boxes_.draw(context);
     }
+    // Translucent: last, so that everything behind it is there to show through.
+    if (showSurface_ && frame_)
+        surface_.draw(context);
     context.gl.glDisable(GL_DEPTH_TEST);
 }
 

@@ -20,6 +20,7 @@
 #include "viewport/SceneBodies.h"
 #include "viewport/SceneGizmos.h"
 #include "viewport/SpeedLegend.h"
+#include "viewport/SurfaceDrawable.h"
 
 #include <QColor>
 #include <QOpenGLWidget>
@@ -64,6 +65,8 @@ public:
     float speedScale() const { return particles_.effectiveSpeedScale(); }
     //! Bubbles of the shown frame that the view draws.
     int bubbleCount() const { return bubbleDrawable_.bubbleCount(); }
+    //! Triangles of the free-surface mesh drawn now (0: none shown).
+    int surfaceTriangleCount() const { return showSurface_ ? surface_.triangleCount() : 0; }
     //! The scene's bodies where the view shows them now (scene or frame poses).
     const SceneBodies& bodies() const { return bodies_; }
     //! The gizmo or body under `position` (widget pixels), as a click there would pick it.
@@ -92,6 +95,9 @@ public Q_SLOTS:
     //! Shows or hides the water particles of the shown frame (and their speed legend), so that
     //! what the water surrounds can be seen.
     void setShowWater(bool show);
+    //! Shows this free-surface mesh of the shown frame (null: none), over everything else.
+    void setWaterSurface(std::shared_ptr<const airtrap::TriangleMesh> mesh);
+    void setShowSurface(bool show);
     //! On, bubbles are drawn over any water in front of them, as if the water were clear, but
     //! still hidden by bodies in front; off, water in front hides them like any solid.
     void setBubblesThroughWater(bool through);
@@ -118,7 +124,7 @@ protected:
 
 private:
     //! Everything drawn in 3D: opaque bubbles, bodies and water first, lines over them.
-    std::array<Drawable*, 6> drawables();
+    std::array<Drawable*, 7> drawables();
     //! Puts the bodies where the shown frame has them (or at their scene poses) for drawing.
     void placeBodies();
     //! Frees every GL object while the context is current (before it goes away).
@@ -141,6 +147,7 @@ private:
     BodyDrawable bodyDrawable_;
     ParticleDrawable particles_;
     BubbleDrawable bubbleDrawable_;
+    SurfaceDrawable surface_;
     SpeedLegend legend_;
 
     SceneGizmos gizmos_;
@@ -159,6 +166,7 @@ private:
     bool showAxes_ = true;
     bool showGizmos_ = true;
     bool showWater_ = true;
+    bool showSurface_ = true;
     bool bubblesThroughWater_ = true;
     //! Until the user navigates, a resize refits the view (the first fit may predate the layout).
     bool refitOnResize_ = false;

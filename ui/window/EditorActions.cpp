@@ -113,6 +113,11 @@ void EditorActions::makeViewActions() {
                                   "surrounds")),
                           true);
     showWater->setShortcut(QKeySequence(Qt::Key_W));
+    showSurface = checkable(make("showSurfaceAction", tr("Show Water &Surface"),
+                                 tr("Draw the free-surface mesh of a cached frame, once Make "
+                                    "Render Outputs has built it")),
+                            true);
+    showSurface->setShortcut(QKeySequence(Qt::Key_S));
     bubblesThroughWater =
         checkable(make("bubblesThroughWaterAction", tr("&Bubbles Through Water"),
                        tr("Draw air bubbles in front of the water around them; bodies still "

@@ -42,6 +42,7 @@ public:
     QAction* showAxes;
     QAction* showGizmos;
     QAction* showWater;
+    QAction* showSurface;
     QAction* bubblesThroughWater;
     // Playback
     QAction* playPause;

@@ -11,6 +11,7 @@
 #include "scene/SceneJson.h"
 #include "scene/SceneSchema.h"
 #include "timeline/FrameLoader.h"
+#include "timeline/SurfaceLoader.h"
 #include "timeline/TimelineWidget.h"
 #include "viewport/ViewportWidget.h"
 #include "window/BakeSession.h"
@@ -43,6 +44,7 @@ constexpr auto kGeometryKey = "mainWindow/geometry";
 constexpr auto kStateKey = "mainWindow/state";
 constexpr auto kSceneFilter = "Airtrap scenes (*.json);;All files (*)";
 constexpr auto kShowWaterKey = "view/showWater";
+constexpr auto kShowSurfaceKey = "view/showSurface";
 constexpr auto kBubblesThroughWaterKey = "view/bubblesThroughWater";
 
 //! Checks `action` as it was last left (its own state the first time) and stores each change as
@@ -100,6 +102,17 @@ void MainWindow::createParts() {
         new RenderSession(*document_, *renderController_, *log_, *actions_, *statusBar(), this);
     renderSession_->setCacheDirectoryProvider([this] { return cacheDirectory(); });
     renderSession_->setLastCachedFrameProvider([this] { return bakeSession_->lastCachedFrame(); });
+    surfaceLoader_ = new SurfaceLoader(this);
+    connect(surfaceLoader_, &SurfaceLoader::surfaceLoaded, this,
+            [this](int frame, std::shared_ptr<const TriangleMesh> mesh) {
+                if (frame != timeline_->currentFrame())
+                    return;
+                viewport_->setWaterSurface(std::move(mesh));
+                Q_EMIT frameShown(frame);
+            });
+    // New meshes for the frame on screen: show them.
+    connect(renderSession_, &RenderSession::outputsChanged, this,
+            [this] { onTimelineFrameChanged(timeline_->currentFrame()); });
 }
 
 QDockWidget* MainWindow::addDock(QWidget* content, const QString& title, const char* objectName,
@@ -194,7 +207,8 @@ void MainWindow::createMenus() {
     viewMenu_->addActions(
         {actions_->frameAll, actions_->showGrid, actions_->showAxes, actions_->showGizmos});
     viewMenu_->addSeparator();
-    viewMenu_->addActions({actions_->showWater, actions_->bubblesThroughWater});
+    viewMenu_->addActions(
+        {actions_->showWater, actions_->showSurface, actions_->bubblesThroughWater});
     viewMenu_->addSeparator();
     for (QDockWidget* dock : findChildren<QDockWidget*>())
         viewMenu_->addAction(dock->toggleViewAction());
@@ -291,11 +305,14 @@ void MainWindow::connectActions() {
     connect(actions_->showAxes, &QAction::toggled, viewport_, &ViewportWidget::setShowAxes);
     connect(actions_->showGizmos, &QAction::toggled, viewport_, &ViewportWidget::setShowGizmos);
     connect(actions_->showWater, &QAction::toggled, viewport_, &ViewportWidget::setShowWater);
+    connect(actions_->showSurface, &QAction::toggled, viewport_, &ViewportWidget::setShowSurface);
     connect(actions_->bubblesThroughWater, &QAction::toggled, viewport_,
             &ViewportWidget::setBubblesThroughWater);
     remember(actions_->showWater, kShowWaterKey);
+    remember(actions_->showSurface, kShowSurfaceKey);
     remember(actions_->bubblesThroughWater, kBubblesThroughWaterKey);
     viewport_->setShowWater(actions_->showWater->isChecked());
+    viewport_->setShowSurface(actions_->showSurface->isChecked());
     viewport_->setBubblesThroughWater(actions_->bubblesThroughWater->isChecked());
     connect(actions_->playPause, &QAction::triggered, this,
             [this] { timeline_->isPlaying() ? timeline_->pause() : timeline_->play(); });
@@ -475,6 +492,7 @@ void MainWindow::onTimelineFrameChanged(int frame) {
         return;
     }
     viewport_->setFrame(nullptr);
+    viewport_->setWaterSurface(nullptr);
     statusFields_->showFrameNumber(frame, document_->scene().frames.fps);
 }
 
@@ -484,7 +502,8 @@ void MainWindow::onFrameLoaded(int frame, std::shared_ptr<const FrameData> data)
         return;
     statusFields_->showFrame(frame, *data);
     viewport_->setFrame(std::move(data));
-    Q_EMIT frameShown(frame);
+    // frameShown() follows once the frame's water surface (or its absence) is known too.
+    surfaceLoader_->request(cacheDirectory(), frame);
 }
 
 // --- Window -------------------------------------------------------------------------------------

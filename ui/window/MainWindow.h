@@ -24,6 +24,7 @@ class ParameterPanel;
 class RecentFiles;
 class RenderOutputController;
 class RenderSession;
+class SurfaceLoader;
 class SceneDocument;
 class SceneTreePanel;
 class SimulationController;
@@ -85,7 +86,7 @@ public Q_SLOTS:
     void showFrame(int frame);
 
 Q_SIGNALS:
-    //! The viewport now draws cached frame `frame`.
+    //! The viewport now draws cached frame `frame`, with its water surface when post made one.
     void frameShown(int frame);
     //! The list of cached frames was read anew (after opening a scene or cache, a refresh).
     void cachedFramesChanged();
@@ -133,6 +134,7 @@ private:
     SimulationController* controller_ = nullptr;
     RenderOutputController* renderController_ = nullptr;
     RenderSession* renderSession_ = nullptr;
+    SurfaceLoader* surfaceLoader_ = nullptr;
     FrameLoader* loader_ = nullptr;
     BakeSession* bakeSession_ = nullptr;
     LogPanel* log_ = nullptr;

@@ -1,0 +1,156 @@
+#include "viewport/SurfaceDrawable.h"
+
+#include "io/ObjExporter.h"
+#include "viewport/RenderContext.h"
+#include "viewport/ShaderSources.h"
+
+#include <QOpenGLContext>
+#include <QOpenGLExtraFunctions>
+#include <QVector3D>
+#include <cstdint>
+#include <vector>
+
+namespace airtrap {
+
+namespace {
+
+const QColor kSurfaceColour(40, 120, 190);
+
+const char* const kVertexShader = R"(#version 330 core
+layout(location = 0) in vec3 position;
+layout(location = 1) in vec3 normal;
+uniform mat4 view;
+uniform mat4 projection;
+out vec3 eyePosition;
+out vec3 eyeNormal;
+void main() {
+    vec4 eye = view * vec4(position, 1.0);
+    eyePosition = eye.xyz;
+    eyeNormal = mat3(view) * normal; // the view is rigid
+    gl_Position = projection * eye;
+}
+)";
+
+// Grazing views are more opaque and paler than straight-on ones, as on real water, which is what
+// shows the surface's shape; a small highlight marks its slopes.
+const char* const kFragmentShader = R"(#version 330 core
+uniform vec3 colour;
+uniform float opacity;
+in vec3 eyePosition;
+in vec3 eyeNormal;
+out vec4 fragColour;
+const vec3 lightDirection = normalize(vec3(-0.35, 0.55, 0.75));
+void main() {
+    vec3 n = normalize(eyeNormal);
+    vec3 toEye = normalize(-eyePosition);
+    if (dot(n, toEye) < 0.0) {
+        n = -n; // seen from below the surface
+    }
+    float facing = max(dot(n, toEye), 0.0);
+    float rim = pow(1.0 - facing, 3.0);
+    float diffuse = max(dot(n, lightDirection), 0.0);
+    float specular = 0.5 * pow(max(dot(n, normalize(lightDirection + toEye)), 0.0), 64.0);
+    vec3 shaded = mix(colour * (0.55 + 0.45 * diffuse), vec3(0.85, 0.92, 1.0), 0.5 * rim);
+    fragColour = vec4(shaded + vec3(specular), mix(opacity, 1.0, 0.6 * rim));
+}
+)";
+
+QVector3D rgb(const QColor& colour) {
+    return QVector3D(float(colour.redF()), float(colour.greenF()), float(colour.blueF()));
+}
+
+} // namespace
+
+SurfaceDrawable::SurfaceDrawable()
+    : vertexBuffer_(QOpenGLBuffer::VertexBuffer), indexBuffer_(QOpenGLBuffer::IndexBuffer) {}
+
+SurfaceDrawable::~SurfaceDrawable() = default;
+
+QColor SurfaceDrawable::colour() {
+    return kSurfaceColour;
+}
+
+void SurfaceDrawable::setMesh(std::shared_ptr<const TriangleMesh> mesh) {
+    mesh_ = std::move(mesh);
+    dirty_ = true;
+}
+
+void SurfaceDrawable::initialize() {
+    program_ = ShaderSources{"surface", kVertexShader, QString(), kFragmentShader}.build();
+    vertexArray_.create();
+    vertexBuffer_.create();
+    vertexBuffer_.setUsagePattern(QOpenGLBuffer::DynamicDraw);
+    indexBuffer_.create();
+    indexBuffer_.setUsagePattern(QOpenGLBuffer::DynamicDraw);
+    QOpenGLExtraFunctions* gl = QOpenGLContext::currentContext()->extraFunctions();
+    QOpenGLVertexArrayObject::Binder binder(&vertexArray_);
+    vertexBuffer_.bind();
+    indexBuffer_.bind(); // the element buffer binding is part of the vertex array's state
+    const auto stride = GLsizei(6 * sizeof(float));
+    gl->glEnableVertexAttribArray(0);
+    gl->glEnableVertexAttribArray(1);
+    gl->glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
+    gl->glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride,
+                              reinterpret_cast<const void*>(std::intptr_t(3 * sizeof(float))));
+    vertexBuffer_.release();
+    uploadedIndices_ = 0;
+    dirty_ = true;
+}
+
+void SurfaceDrawable::upload() {
+    dirty_ = false;
+    uploadedIndices_ = 0;
+    if (!mesh_ || mesh_->triangles.empty())
+        return;
+    const std::vector<Vec3d> normals = vertexNormals(*mesh_);
+    std::vector<float> vertices;
+    vertices.reserve(6 * mesh_->vertices.size());
+    for (std::size_t v = 0; v < mesh_->vertices.size(); ++v)
+        for (const Vec3d* value : {&mesh_->vertices[v], &normals[v]})
+            for (int axis = 0; axis < 3; ++axis)
+                vertices.push_back(float((*value)[axis]));
+    QOpenGLVertexArrayObject::Binder binder(&vertexArray_);
+    vertexBuffer_.bind();
+    vertexBuffer_.allocate(vertices.data(), int(vertices.size() * sizeof(float)));
+    vertexBuffer_.release();
+    // Triangles are three uint32 indices each, laid out as the element buffer wants them.
+    static_assert(sizeof(TriangleMesh::Triangle) == 3 * sizeof(GLuint));
+    indexBuffer_.bind();
+    indexBuffer_.allocate(mesh_->triangles.data(),
+                          int(mesh_->triangles.size() * sizeof(TriangleMesh::Triangle)));
+    uploadedIndices_ = int(3 * mesh_->triangles.size());
+}
+
+void SurfaceDrawable::draw(const RenderContext& context) {
+    if (!program_)
+        return;
+    if (dirty_)
+        upload();
+    if (uploadedIndices_ == 0)
+        return;
+    QOpenGLExtraFunctions& gl = context.gl;
+    gl.glEnable(GL_DEPTH_TEST);
+    gl.glEnable(GL_BLEND);
+    gl.glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    gl.glDepthMask(GL_FALSE); // what lies behind the sheet stays visible through it
+    program_->bind();
+    program_->setUniformValue("view", context.view);
+    program_->setUniformValue("projection", context.projection);
+    program_->setUniformValue("colour", rgb(kSurfaceColour));
+    program_->setUniformValue("opacity", opacity_);
+    QOpenGLVertexArrayObject::Binder binder(&vertexArray_);
+    gl.glDrawElements(GL_TRIANGLES, uploadedIndices_, GL_UNSIGNED_INT, nullptr);
+    program_->release();
+    gl.glDepthMask(GL_TRUE);
+    gl.glDisable(GL_BLEND);
+}
+
+void SurfaceDrawable::release() {
+    program_.reset();
+    vertexBuffer_.destroy();
+    indexBuffer_.destroy();
+    vertexArray_.destroy();
+    uploadedIndices_ = 0;
+}
+
+} // namespace airtrap
