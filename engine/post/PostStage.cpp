@@ -32,7 +32,7 @@ nlohmann::json PostStage::settingsOf(const Scene& scene) {
             {"particle_spacing", scene.solver.particleSpacing}};
 }
 
-bool PostStage::makeFrame(int frame, Interrupter& interrupter, PostReport& report) {
+void PostStage::makeFrame(int frame, Interrupter& interrupter, PostReport& report) {
     const auto start = std::chrono::steady_clock::now();
     const CacheManifest manifest = cache_.manifestSnapshot();
     const CacheFrameEntry* source = manifest.findFrame(frame);
@@ -42,7 +42,7 @@ bool PostStage::makeFrame(int frame, Interrupter& interrupter, PostReport& repor
     if (store_.isCurrent(frame, source->crc32)) {
         const std::lock_guard lock(reportMutex_);
         ++report.alreadyCurrent;
-        return true;
+        return;
     }
     FrameData data;
     try {
@@ -52,14 +52,14 @@ bool PostStage::makeFrame(int frame, Interrupter& interrupter, PostReport& repor
             throw;
         const std::lock_guard lock(reportMutex_);
         report.damaged.push_back(error.what());
-        return false;
+        return;
     }
     const double spacing = scene_.solver.particleSpacing;
     Interrupter part(&interrupter);
     const WaterVolume water =
         WaterVolume::build(data.state.fluid, spacing, scene_.surfaceMesh, &part);
     if (part.stopRequested())
-        return false;
+        return;
     const TriangleMesh surface = freeSurfaceOnly(water.mesh(), FrameSolids(solids_, data.state),
                                                  scene_.surfaceMesh.margin * spacing);
     PostFrameEntry entry{frame, source->crc32, surface.triangleCount(), secondsSince(start)};
@@ -67,7 +67,6 @@ bool PostStage::makeFrame(int frame, Interrupter& interrupter, PostReport& repor
     const std::lock_guard lock(reportMutex_);
     ++report.made;
     report.secondsPerFrame += entry.seconds;
-    return true;
 }
 
 PostReport PostStage::run(const std::vector<int>& frames, Interrupter& interrupter) {

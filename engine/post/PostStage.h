@@ -42,8 +42,8 @@ public:
     const PostStore& store() const { return store_; }
 
 private:
-    //! False when the cache frame is damaged (recorded in `report`) or the run was stopped.
-    bool makeFrame(int frame, Interrupter& interrupter, PostReport& report);
+    //! Makes one frame's results, or records in `report` why not (current already, damaged).
+    void makeFrame(int frame, Interrupter& interrupter, PostReport& report);
 
     const FrameCache& cache_;
     Scene scene_;

@@ -64,6 +64,10 @@ private Q_SLOTS:
         window.actions().showSurface->setChecked(false);
         QCOMPARE(window.viewport()->surfaceTriangleCount(), 0);
         window.actions().showSurface->setChecked(true);
+        window.actions().transparentSurface->setChecked(false);
+        QCOMPARE(window.viewport()->surfaceOpacity(), 1.0f);
+        window.actions().transparentSurface->setChecked(true);
+        QVERIFY(window.viewport()->surfaceOpacity() < 1.0f);
 
         RenderRequest request;
         request.formats = {ExportFormat::Obj};

@@ -22,8 +22,12 @@ public:
 
     //! Shows `mesh` (null: none).
     void setMesh(std::shared_ptr<const TriangleMesh> mesh);
-    //! 0 (invisible) to 1 (opaque); 0.55 by default.
+    //! Face-on opacity of the translucent look (grazing views are more opaque).
+    static constexpr float kTranslucent = 0.55f;
+
+    //! 0 (invisible) to 1 (opaque); kTranslucent by default.
     void setOpacity(float opacity) { opacity_ = opacity; }
+    float opacity() const { return opacity_; }
     int triangleCount() const { return mesh_ ? int(mesh_->triangleCount()) : 0; }
 
     static QColor colour();
@@ -41,7 +45,7 @@ private:
     QOpenGLVertexArrayObject vertexArray_;
     std::shared_ptr<const TriangleMesh> mesh_;
     int uploadedIndices_ = 0;
-    float opacity_ = 0.55f;
+    float opacity_ = kTranslucent;
     bool dirty_ = false;
 };
 

@@ -140,6 +140,11 @@ void ViewportWidget::setShowSurface(bool show) {
     update();
 }
 
+void ViewportWidget::setSurfaceTransparent(bool transparent) {
+    surface_.setOpacity(transparent ? SurfaceDrawable::kTranslucent : 1.0f);
+    update();
+}
+
 void ViewportWidget::setBubblesThroughWater(bool through) {
     bubblesThroughWater_ = through;
     update();

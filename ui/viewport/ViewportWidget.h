@@ -98,6 +98,9 @@ public Q_SLOTS:
     //! Shows this free-surface mesh of the shown frame (null: none), over everything else.
     void setWaterSurface(std::shared_ptr<const airtrap::TriangleMesh> mesh);
     void setShowSurface(bool show);
+    //! Translucent (the default) or opaque water surface.
+    void setSurfaceTransparent(bool transparent);
+    float surfaceOpacity() const { return surface_.opacity(); }
     //! On, bubbles are drawn over any water in front of them, as if the water were clear, but
     //! still hidden by bodies in front; off, water in front hides them like any solid.
     void setBubblesThroughWater(bool through);

@@ -118,6 +118,10 @@ void EditorActions::makeViewActions() {
                                     "Render Outputs has built it")),
                             true);
     showSurface->setShortcut(QKeySequence(Qt::Key_S));
+    transparentSurface = checkable(make("transparentSurfaceAction", tr("&Transparent Surface"),
+                                        tr("See the particles, bubbles and bodies through the "
+                                           "water surface; off, it is opaque")),
+                                   true);
     bubblesThroughWater =
         checkable(make("bubblesThroughWaterAction", tr("&Bubbles Through Water"),
                        tr("Draw air bubbles in front of the water around them; bodies still "

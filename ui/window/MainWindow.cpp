@@ -45,6 +45,7 @@ constexpr auto kStateKey = "mainWindow/state";
 constexpr auto kSceneFilter = "Airtrap scenes (*.json);;All files (*)";
 constexpr auto kShowWaterKey = "view/showWater";
 constexpr auto kShowSurfaceKey = "view/showSurface";
+constexpr auto kTransparentSurfaceKey = "view/transparentSurface";
 constexpr auto kBubblesThroughWaterKey = "view/bubblesThroughWater";
 
 //! Checks `action` as it was last left (its own state the first time) and stores each change as
@@ -207,8 +208,8 @@ void MainWindow::createMenus() {
     viewMenu_->addActions(
         {actions_->frameAll, actions_->showGrid, actions_->showAxes, actions_->showGizmos});
     viewMenu_->addSeparator();
-    viewMenu_->addActions(
-        {actions_->showWater, actions_->showSurface, actions_->bubblesThroughWater});
+    viewMenu_->addActions({actions_->showWater, actions_->showSurface, actions_->transparentSurface,
+                           actions_->bubblesThroughWater});
     viewMenu_->addSeparator();
     for (QDockWidget* dock : findChildren<QDockWidget*>())
         viewMenu_->addAction(dock->toggleViewAction());
@@ -306,13 +307,17 @@ void MainWindow::connectActions() {
     connect(actions_->showGizmos, &QAction::toggled, viewport_, &ViewportWidget::setShowGizmos);
     connect(actions_->showWater, &QAction::toggled, viewport_, &ViewportWidget::setShowWater);
     connect(actions_->showSurface, &QAction::toggled, viewport_, &ViewportWidget::setShowSurface);
+    connect(actions_->transparentSurface, &QAction::toggled, viewport_,
+            &ViewportWidget::setSurfaceTransparent);
     connect(actions_->bubblesThroughWater, &QAction::toggled, viewport_,
             &ViewportWidget::setBubblesThroughWater);
     remember(actions_->showWater, kShowWaterKey);
     remember(actions_->showSurface, kShowSurfaceKey);
+    remember(actions_->transparentSurface, kTransparentSurfaceKey);
     remember(actions_->bubblesThroughWater, kBubblesThroughWaterKey);
     viewport_->setShowWater(actions_->showWater->isChecked());
     viewport_->setShowSurface(actions_->showSurface->isChecked());
+    viewport_->setSurfaceTransparent(actions_->transparentSurface->isChecked());
     viewport_->setBubblesThroughWater(actions_->bubblesThroughWater->isChecked());
     connect(actions_->playPause, &QAction::triggered, this,
             [this] { timeline_->isPlaying() ? timeline_->pause() : timeline_->play(); });
