@@ -1,0 +1,57 @@
+#include "post/SubgridAdvector.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace airtrap {
+
+namespace {
+//! Water fraction below which a point is in air: half a particle's worth of water.
+constexpr double kInWater = 0.5;
+} // namespace
+
+SubgridAdvector::SubgridAdvector(const SubgridBubbleSettings& settings, const Scene& scene)
+    : settings_(settings), rise_(scene.bubbles), up_(-scene.solver.gravity.normalized()),
+      gravity_(scene.solver.gravity.norm()),
+      particleVolume_(std::pow(scene.solver.particleSpacing, 3)) {}
+
+double SubgridAdvector::riseSpeed(double radius) const {
+    const double stokes = 2.0 / 9.0 * gravity_ * radius * radius / rise_.kinematicViscosity;
+    return std::min(stokes, rise_.maxRiseSpeed);
+}
+
+Vec3d SubgridAdvector::velocityAt(const Vec3d& x, double radius, const WaterVelocityField& water,
+                                  bool& inWater) const {
+    const WaterVelocityField::Sample sample = water.sample(x, particleVolume_);
+    inWater = sample.weight >= kInWater;
+    return sample.velocity + riseSpeed(radius) * up_;
+}
+
+void SubgridAdvector::advance(std::vector<SubgridBubble>& bubbles, const WaterVelocityField& water,
+                              double seconds) const {
+    const int steps = std::max(1, settings_.substeps);
+    const double dt = seconds / steps;
+    std::vector<bool> popped(bubbles.size(), false);
+    for (std::size_t i = 0; i < bubbles.size(); ++i) {
+        SubgridBubble& bubble = bubbles[i];
+        for (int step = 0; step < steps && !popped[i]; ++step) {
+            bool inWater = true;
+            const Vec3d start = velocityAt(bubble.position, bubble.radius, water, inWater);
+            if (!inWater) {
+                popped[i] = true;
+                break;
+            }
+            const Vec3d middle = bubble.position + 0.5 * dt * start;
+            bubble.velocity = velocityAt(middle, bubble.radius, water, inWater);
+            bubble.position += dt * bubble.velocity;
+            bubble.age += dt;
+        }
+    }
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < bubbles.size(); ++i)
+        if (!popped[i] && bubbles[i].age <= settings_.lifetime)
+            bubbles[kept++] = bubbles[i];
+    bubbles.resize(kept);
+}
+
+} // namespace airtrap

@@ -1,0 +1,39 @@
+#pragma once
+// Moves sub-grid bubbles through the cached water (paper §4.2): passively with the water's
+// velocity, interpolated from the frame's particles, plus their own rise, the Stokes speed of
+// their radius capped as the trapped bubbles' is (eq. 5), integrated with the midpoint rule
+// (second-order Runge–Kutta). A bubble that reaches air (less than half a particle's worth of
+// water around it) has surfaced and pops; one older than the lifetime is deleted too.
+#include "post/SubgridBubble.h"
+#include "post/SubgridBubbleSettings.h"
+#include "post/WaterVelocityField.h"
+#include "scene/Scene.h"
+
+#include <vector>
+
+namespace airtrap {
+
+class SubgridAdvector {
+public:
+    SubgridAdvector(const SubgridBubbleSettings& settings, const Scene& scene);
+
+    //! m/s, the capped Stokes rise speed of a bubble of `radius` m.
+    double riseSpeed(double radius) const;
+    //! Advances every bubble by `seconds` through `water` in the settings' substeps, then drops
+    //! the popped and the expired. Order of the survivors is kept.
+    void advance(std::vector<SubgridBubble>& bubbles, const WaterVelocityField& water,
+                 double seconds) const;
+
+private:
+    //! Velocity of a bubble of `radius` at `x`; false in `inWater` where the water ends.
+    Vec3d velocityAt(const Vec3d& x, double radius, const WaterVelocityField& water,
+                     bool& inWater) const;
+
+    SubgridBubbleSettings settings_;
+    BubbleSettings rise_;
+    Vec3d up_;
+    double gravity_;
+    double particleVolume_;
+};
+
+} // namespace airtrap
