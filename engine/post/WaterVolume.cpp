@@ -89,6 +89,33 @@ Vec3d toVec3d(const openvdb::Vec3s& p) {
     return {double(p.x()), double(p.y()), double(p.z())};
 }
 
+//! The union of one sphere of `radius` per particle as a signed distance in `grids.surface`, and
+//! the nearest particle's velocity over its band in `grids.velocity`.
+void rasterise(const ParticleSet& fluid, double radius, float halfWidth, WaterGrids& grids,
+               Interrupter* interrupter) {
+    openvdb::tools::ParticlesToLevelSet<openvdb::FloatGrid, openvdb::Vec3s, Interrupter> raster(
+        *grids.surface, interrupter);
+    raster.rasterizeSpheres(ParticleList(fluid), radius);
+    raster.finalize(true);
+    grids.velocity = raster.attributeGrid();
+    // Inside the union of spheres the values only reach −radius; rebuilt, the grid is a true
+    // signed distance with interior tiles, as the filters, the fog and renderers need.
+    grids.surface = openvdb::tools::levelSetRebuild(*grids.surface, 0.0f, halfWidth);
+    grids.surface->setName("surface");
+}
+
+//! Flattens the spheres' bumps, then gives back the volume the smoothing took.
+void smoothKeepingVolume(openvdb::FloatGrid& surface, int passes, double volume, double maxShift,
+                         Interrupter* interrupter) {
+    SurfaceFilter filter(surface, interrupter);
+    // One renormalisation sweep per filter pass instead of three: the passes are small moves,
+    // and the sweeps were two thirds of the stage's time.
+    filter.setNormCount(1);
+    for (int pass = 0; pass < passes; ++pass)
+        filter.meanCurvature();
+    matchVolume(filter, volume, maxShift);
+}
+
 } // namespace
 
 WaterVolume WaterVolume::build(const ParticleSet& fluid, double spacing,
@@ -105,24 +132,10 @@ WaterVolume WaterVolume::build(const ParticleSet& fluid, double spacing,
     grids->surface->setName("surface");
     grids->velocity = openvdb::Vec3SGrid::create();
     const double particleVolume = double(fluid.size()) * spacing * spacing * spacing;
-
     if (!fluid.empty()) {
-        openvdb::tools::ParticlesToLevelSet<openvdb::FloatGrid, openvdb::Vec3s, Interrupter> raster(
-            *grids->surface, interrupter);
-        raster.rasterizeSpheres(ParticleList(fluid), radius);
-        raster.finalize(true);
-        grids->velocity = raster.attributeGrid();
-        // Inside the union of spheres the values only reach −radius; rebuilt, the grid is a
-        // true signed distance with interior tiles, as the filters, the fog and renderers need.
-        grids->surface = openvdb::tools::levelSetRebuild(*grids->surface, 0.0f, halfWidth);
-        grids->surface->setName("surface");
-        SurfaceFilter filter(*grids->surface, interrupter);
-        // One renormalisation sweep per filter pass instead of three: the passes are small
-        // moves, and the sweeps were two thirds of the stage's time.
-        filter.setNormCount(1);
-        for (int pass = 0; pass < settings.smoothing; ++pass)
-            filter.meanCurvature();
-        matchVolume(filter, particleVolume, radius);
+        rasterise(fluid, radius, halfWidth, *grids, interrupter);
+        smoothKeepingVolume(*grids->surface, settings.smoothing, particleVolume, radius,
+                            interrupter);
     }
     if (interrupter != nullptr && interrupter->stopRequested())
         return {};
