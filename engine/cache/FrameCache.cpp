@@ -211,6 +211,17 @@ CacheFrameEntry FrameCache::entryOf(int frame) const {
     return *entry;
 }
 
+std::optional<FrameData> FrameCache::readIntactFrame(int frame, std::string& problem) const {
+    try {
+        return readFrame(frame);
+    } catch (const Error& error) {
+        if (error.kind() != ErrorKind::CacheCorrupt)
+            throw;
+        problem = error.what();
+        return std::nullopt;
+    }
+}
+
 FrameData FrameCache::readFrame(int frame) const {
     const CacheFrameEntry entry = entryOf(frame);
     const std::string path = dir_ + "/" + entry.file;

@@ -16,6 +16,7 @@
 #include "cache/FrameFile.h"
 
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,9 @@ public:
     //! manifest's size and CRC. Damaged or missing file → CacheCorrupt naming it; a frame not
     //! listed → InvalidInput.
     FrameData readFrame(int frame) const;
+    //! readFrame() for loops that skip damaged frames: a frame that fails its checks gives
+    //! nothing and its "<path>: <reason>" in `problem`; other errors (Io, not listed) propagate.
+    std::optional<FrameData> readIntactFrame(int frame, std::string& problem) const;
 
     //! Listed frame numbers, ascending.
     std::vector<int> frames() const;

@@ -1,29 +1,25 @@
 #include "io/BubblePoints.h"
 
 #include "core/AtomicFile.h"
+#include "io/PlyHeader.h"
 
-#include <bit>
 #include <cstring>
 
 namespace airtrap {
 
-static_assert(std::endian::native == std::endian::little,
-              "PLY bodies are written little-endian; a big-endian host needs byte swapping");
-
 namespace {
 
 std::string header(std::size_t count, const std::vector<std::string>& comments) {
-    std::string text = "ply\nformat binary_little_endian 1.0\n";
-    for (std::string comment : comments) {
-        for (char& c : comment)
-            if (c == '\n' || c == '\r')
-                c = ' ';
-        text += "comment " + comment + "\n";
-    }
-    text += "element vertex " + std::to_string(count) + "\n";
-    for (const char* name : {"x", "y", "z", "pscale", "vx", "vy", "vz", "age"})
-        text += std::string("property float ") + name + "\n";
-    return text + "property uint id\nend_header\n";
+    return plyHeader(count, comments,
+                     {{"float", "x"},
+                      {"float", "y"},
+                      {"float", "z"},
+                      {"float", "pscale"},
+                      {"float", "vx"},
+                      {"float", "vy"},
+                      {"float", "vz"},
+                      {"float", "age"},
+                      {"uint", "id"}});
 }
 
 } // namespace

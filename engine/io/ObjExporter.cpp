@@ -1,6 +1,7 @@
 #include "io/ObjExporter.h"
 
 #include "core/AtomicFile.h"
+#include "io/PlyHeader.h"
 
 #include <charconv>
 #include <string_view>
@@ -72,13 +73,8 @@ std::vector<Vec3d> vertexNormals(const TriangleMesh& mesh) {
 std::string ObjExporter::encode(const std::vector<NamedMesh>& objects, UpAxis up,
                                 const std::vector<std::string>& comments) {
     std::string text;
-    for (std::string comment : comments) {
-        // A line break would end the comment and leave the rest as a statement.
-        for (char& c : comment)
-            if (c == '\n' || c == '\r')
-                c = ' ';
-        text += "# " + comment + "\n";
-    }
+    for (const std::string& comment : comments)
+        text += "# " + oneLine(comment) + "\n";
     std::size_t firstVertex = 0;
     for (const NamedMesh& object : objects) {
         appendObject(text, object, up, firstVertex);

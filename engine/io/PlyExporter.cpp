@@ -1,34 +1,25 @@
 #include "io/PlyExporter.h"
 
 #include "core/AtomicFile.h"
+#include "io/PlyHeader.h"
 
-#include <bit>
 #include <cstdio>
 #include <cstring>
 
 namespace airtrap {
 
-// Values are copied as they are in memory; the body is declared little-endian.
-static_assert(std::endian::native == std::endian::little,
-              "PLY bodies are written little-endian; a big-endian host needs byte swapping");
-
 namespace {
 
 std::string header(std::size_t count, const std::vector<std::string>& comments) {
-    std::string text = "ply\nformat binary_little_endian 1.0\n";
-    for (const std::string& comment : comments) {
-        // A newline inside a comment would end the header line early and break the file.
-        std::string line = comment;
-        for (char& c : line)
-            if (c == '\n' || c == '\r')
-                c = ' ';
-        text += "comment " + line + "\n";
-    }
-    text += "element vertex " + std::to_string(count) + "\n";
-    for (const char* name : {"x", "y", "z", "vx", "vy", "vz", "density"})
-        text += std::string("property float ") + name + "\n";
-    text += "property uint id\nend_header\n";
-    return text;
+    return plyHeader(count, comments,
+                     {{"float", "x"},
+                      {"float", "y"},
+                      {"float", "z"},
+                      {"float", "vx"},
+                      {"float", "vy"},
+                      {"float", "vz"},
+                      {"float", "density"},
+                      {"uint", "id"}});
 }
 
 void append(std::uint8_t*& out, const void* value, std::size_t size) {

@@ -112,15 +112,13 @@ void SequenceExporter::writePlyFiles(const FrameData& data, ExportReport& report
 }
 
 bool SequenceExporter::exportFrame(int frame, ExportReport& report) {
-    FrameData data;
-    try {
-        data = cache_.readFrame(frame);
-    } catch (const Error& error) {
-        if (error.kind() != ErrorKind::CacheCorrupt)
-            throw;
-        report.damaged.push_back(error.what());
+    std::string problem;
+    const std::optional<FrameData> intact = cache_.readIntactFrame(frame, problem);
+    if (!intact) {
+        report.damaged.push_back(problem);
         return false;
     }
+    const FrameData& data = *intact;
     switch (options_.format) {
     case ExportFormat::Ply:
         writePlyFiles(data, report);

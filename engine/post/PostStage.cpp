@@ -44,23 +44,20 @@ void PostStage::makeFrame(int frame, Interrupter& interrupter, PostReport& repor
         ++report.alreadyCurrent;
         return;
     }
-    FrameData data;
-    try {
-        data = cache_.readFrame(frame);
-    } catch (const Error& error) {
-        if (error.kind() != ErrorKind::CacheCorrupt)
-            throw;
+    std::string problem;
+    const std::optional<FrameData> data = cache_.readIntactFrame(frame, problem);
+    if (!data) {
         const std::lock_guard lock(reportMutex_);
-        report.damaged.push_back(error.what());
+        report.damaged.push_back(problem);
         return;
     }
     const double spacing = scene_.solver.particleSpacing;
     Interrupter part(&interrupter);
     const WaterVolume water =
-        WaterVolume::build(data.state.fluid, spacing, scene_.surfaceMesh, &part);
+        WaterVolume::build(data->state.fluid, spacing, scene_.surfaceMesh, &part);
     if (part.stopRequested())
         return;
-    const TriangleMesh surface = freeSurfaceOnly(water.mesh(), FrameSolids(solids_, data.state),
+    const TriangleMesh surface = freeSurfaceOnly(water.mesh(), FrameSolids(solids_, data->state),
                                                  scene_.surfaceMesh.margin * spacing);
     PostFrameEntry entry{frame, source->crc32, surface.triangleCount(), secondsSince(start)};
     store_.writeFrame(entry, surface, water);
