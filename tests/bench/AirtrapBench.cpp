@@ -9,6 +9,7 @@
 // per particle, ms per phase and bytes per particle, as a table or (--json) as one JSON array.
 #include "BenchmarkCase.h"
 #include "BubbleBakeComparison.h"
+#include "DamBreakScene.h"
 #include "scene/SceneJson.h"
 
 #include <CLI/CLI.hpp>
@@ -24,17 +25,6 @@ using namespace airtrap;
 using namespace airtrap::bench;
 
 namespace {
-
-//! The sample dam break with the spacing chosen so its water holds about `particles`.
-Scene damBreakWith(const Scene& sample, double particles) {
-    Scene scene = sample;
-    double waterVolume = 0.0;
-    for (const FluidBlock& block : scene.fluidBlocks)
-        waterVolume += (block.max - block.min).prod();
-    scene.solver.particleSpacing = std::cbrt(waterVolume / particles);
-    scene.solver.supportFactor = 2.0;
-    return scene;
-}
 
 //! The diving-bunny pool at about `particles`, with the bunny already half-way into the water
 //! and plunging at 1 m/s, so every measured step couples; or the same pool without it.

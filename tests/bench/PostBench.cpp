@@ -2,6 +2,7 @@
 // Bakes the dam break at about --particles into a scratch cache, then times the post stage
 // (water level set and free-surface mesh, stored beside the cache) and the OBJ and VDB exports
 // of the same frames, and prints seconds per frame of each beside the bake's.
+#include "DamBreakScene.h"
 #include "cache/FrameCache.h"
 #include "core/ThreadLimit.h"
 #include "io/SequenceExporter.h"
@@ -22,17 +23,6 @@ namespace {
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-//! The dam break with its spacing chosen for about `particles` (support 2 × spacing, as every
-//! benchmark here).
-Scene damBreakWith(Scene scene, double particles) {
-    double waterVolume = 0.0;
-    for (const FluidBlock& block : scene.fluidBlocks)
-        waterVolume += (block.max - block.min).prod();
-    scene.solver.particleSpacing = std::cbrt(waterVolume / particles);
-    scene.solver.supportFactor = 2.0;
-    return scene;
 }
 
 struct Timing {
@@ -95,7 +85,7 @@ int main(int argc, char** argv) {
 
     try {
         const ThreadLimit limit(threads);
-        const Scene scene = damBreakWith(readSceneFile(scenePath), particles);
+        const Scene scene = bench::damBreakWith(readSceneFile(scenePath), particles);
         const Timing t = measure(scene, frames, dir);
         const double postShare = 100.0 * t.postPerFrame / t.bakePerFrame;
         if (json) {
