@@ -9,7 +9,7 @@ namespace airtrap::cli {
 namespace {
 
 bool changesRendering(const std::string& assignment) {
-    for (const std::string section : {"surface_mesh.", "bubble_mesh."})
+    for (const std::string section : {"surface_mesh.", "bubble_mesh.", "subgrid_bubbles."})
         if (assignment.rfind(section, 0) == 0)
             return true;
     return false;
@@ -23,8 +23,9 @@ Scene cacheScene(const FrameCache& cache, const std::vector<std::string>& render
         if (!changesRendering(assignment))
             throw Error(ErrorKind::InvalidScene,
                         "--set " + assignment +
-                            ": only the render settings (surface_mesh.*, bubble_mesh.*) can "
-                            "change after a bake; bake again to change the simulation");
+                            ": only the render settings (surface_mesh.*, bubble_mesh.*, "
+                            "subgrid_bubbles.*) can change after a bake; bake again to change "
+                            "the simulation");
     applySceneOverrides(scene, renderOverrides);
     return scene;
 }

@@ -1,7 +1,7 @@
 #pragma once
 // The scene a cache was baked from (the manifest's copy), for the verbs that make pictures of a
 // bake: post and export. `--set` may change how the bake is rendered (surface_mesh.*,
-// bubble_mesh.*), not what was simulated: that would need a new bake.
+// bubble_mesh.*, subgrid_bubbles.*), not what was simulated: that would need a new bake.
 #include "cache/FrameCache.h"
 #include "scene/Scene.h"
 

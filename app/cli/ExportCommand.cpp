@@ -26,7 +26,7 @@ void ExportCommand::addTo(CLI::App& parent) {
         ->check(CLI::IsMember({"y", "z"}));
     app_->add_option("--set", overrides_,
                      "Change a render setting for this export, e.g. bubble_mesh.magnitude=0.2 "
-                     "(surface_mesh.* and bubble_mesh.* only)");
+                     "(surface_mesh.*, bubble_mesh.* and subgrid_bubbles.* only)");
     app_->add_flag("--quiet,-q", quiet_, "No summary line");
 }
 

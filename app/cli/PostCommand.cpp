@@ -19,15 +19,25 @@ namespace airtrap::cli {
 void PostCommand::addTo(CLI::App& parent) {
     app_ = parent.add_subcommand(
         "post",
-        "Make the water's free-surface mesh and volume of a baked cache (kept in DIR/post)");
+        "Make the water's free-surface mesh and volume and the sub-grid bubbles of a baked cache "
+        "(kept in DIR/post)");
     app_->add_option("DIR", cacheDir_, "Cache folder")->required();
     app_->add_option("--frames", framesText_, "Frames: A:B, A:, :B or N (default: all)");
     app_->add_option("--set", overrides_,
                      "Change a render setting for this run, e.g. surface_mesh.smoothing=8 "
-                     "(surface_mesh.* and bubble_mesh.* only)");
+                     "(surface_mesh.*, bubble_mesh.* and subgrid_bubbles.* only)");
     app_->add_option("--threads,-j", threads_, "Worker threads (0 = all cores)")
         ->check(CLI::Range(0, 1024));
     app_->add_flag("--quiet,-q", quiet_, "No progress line and no summary");
+}
+
+void PostCommand::summariseSubgrid(const SubgridReport& report) const {
+    std::cout << "sub-grid bubbles: " << report.made << " frame(s) made";
+    if (report.alreadyCurrent > 0)
+        std::cout << ", " << report.alreadyCurrent << " already current";
+    if (report.lastFrame > 0)
+        std::cout << "; " << report.lastFrameBubbles << " in frame " << report.lastFrame;
+    std::cout << '\n';
 }
 
 ExitCode PostCommand::summarise(const PostReport& report, const std::string& storeDir) const {
@@ -47,6 +57,7 @@ ExitCode PostCommand::summarise(const PostReport& report, const std::string& sto
         if (report.made > 0)
             std::cout << " (" << perFrame << " s per frame)";
         std::cout << " in " << ProgressLine::clock(report.seconds) << " into " << storeDir << '\n';
+        summariseSubgrid(report.subgrid);
     }
     if (!report.damaged.empty())
         throw Error(ErrorKind::CacheCorrupt, std::to_string(report.damaged.size()) +
@@ -65,12 +76,17 @@ ExitCode PostCommand::run() {
 
     const bool inPlace = !quiet_ && ::isatty(STDERR_FILENO);
     const auto total = frames.size();
-    Interrupter interrupter([&](const std::string&, double percent) {
+    Interrupter interrupter([&](const std::string& stageName, double percent) {
         if (quiet_)
             return;
-        const auto done = std::size_t(std::lround(percent * double(total) / 100.0));
-        std::cerr << (inPlace ? "\r" : "") << "post: " << done << " of " << total << " frame(s)"
-                  << (inPlace ? "" : "\n") << std::flush;
+        std::cerr << (inPlace ? "\r" : "") << stageName << ": ";
+        // The sub-grid pass also walks the frames before the chosen ones: its share is a percent.
+        if (stageName == "post")
+            std::cerr << std::lround(percent * double(total) / 100.0) << " of " << total
+                      << " frame(s)";
+        else
+            std::cerr << std::lround(percent) << " %   ";
+        std::cerr << (inPlace ? "" : "\n") << std::flush;
     });
     const SignalStopper stopper(interrupter);
     const PostReport report = stage.run(frames, interrupter);

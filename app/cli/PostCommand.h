@@ -1,8 +1,9 @@
 #pragma once
 // `airtrap-cli post DIR [--frames A:B] [--set surface_mesh.key=value ...] [--threads N]`: makes
-// the render outputs of a baked cache and keeps them beside it (DIR/post, PostStage), ready for
-// `export` and the editor. Re-running only redoes frames that were re-baked since, or all of them
-// when the render settings changed; no re-simulation ever.
+// the render outputs of a baked cache (water surfaces and volumes, sub-grid bubbles) and keeps
+// them beside it (DIR/post, PostStage), ready for `export` and the editor. Re-running only redoes
+// frames that were re-baked since, or all of them when the render settings changed; no
+// re-simulation ever.
 #include "Command.h"
 
 #include <string>
@@ -10,7 +11,8 @@
 
 namespace airtrap {
 struct PostReport;
-}
+struct SubgridReport;
+} // namespace airtrap
 
 namespace airtrap::cli {
 
@@ -21,6 +23,7 @@ public:
 
 private:
     ExitCode summarise(const PostReport& report, const std::string& storeDir) const;
+    void summariseSubgrid(const SubgridReport& report) const;
 
     std::string cacheDir_;
     std::string framesText_;

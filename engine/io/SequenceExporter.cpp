@@ -8,6 +8,7 @@
 #include "io/SequenceName.h"
 #include "io/VdbExporter.h"
 #include "post/FrameSolids.h"
+#include "post/Icosphere.h"
 
 #include <chrono>
 #include <cstdio>
@@ -19,6 +20,27 @@ namespace {
 
 bool needsPostResults(ExportFormat format) {
     return format != ExportFormat::Ply;
+}
+
+//! The sub-grid bubbles as one mesh of small spheres: thousands of objects would slow an import.
+TriangleMesh spheresAt(const std::vector<SubgridBubble>& bubbles, const TriangleMesh& unit) {
+    TriangleMesh spheres;
+    for (const SubgridBubble& bubble : bubbles) {
+        const auto first = std::uint32_t(spheres.vertices.size());
+        for (const Vec3d& v : unit.vertices)
+            spheres.vertices.push_back(bubble.position + bubble.radius * v);
+        for (const TriangleMesh::Triangle& t : unit.triangles)
+            spheres.triangles.push_back({first + t[0], first + t[1], first + t[2]});
+    }
+    return spheres;
+}
+
+std::vector<BubblePoint> pointsOf(const std::vector<SubgridBubble>& bubbles) {
+    std::vector<BubblePoint> points;
+    points.reserve(bubbles.size());
+    for (const SubgridBubble& bubble : bubbles)
+        points.push_back({bubble.position, bubble.radius, bubble.velocity, bubble.age, bubble.id});
+    return points;
 }
 
 std::string frameList(const std::vector<int>& frames) {
@@ -34,7 +56,8 @@ std::string frameList(const std::vector<int>& frames) {
 SequenceExporter::SequenceExporter(const FrameCache& cache, const Scene& scene,
                                    ExportOptions options)
     : cache_(cache), scene_(scene), options_(std::move(options)), solids_(scene),
-      bubbleMesh_(scene.bubbleMesh), store_(PostStore::open(cache.directory())) {}
+      bubbleMesh_(scene.bubbleMesh), store_(PostStore::open(cache.directory())),
+      subgrid_(SubgridStore::open(cache.directory())), subgridSphere_(unitIcosphere(1)) {}
 
 ExportFormat SequenceExporter::parseFormat(const std::string& name) {
     if (name == "ply")
@@ -47,21 +70,31 @@ ExportFormat SequenceExporter::parseFormat(const std::string& name) {
                 "export format '" + name + "' is not known; expected obj, vdb or ply");
 }
 
+bool SequenceExporter::exportsSubgrid() const {
+    return scene_.bubbles.enabled && scene_.subgridBubbles.maxPerBubble > 0;
+}
+
+bool SequenceExporter::hasPostResults(const CacheManifest& manifest, int frame) const {
+    const CacheFrameEntry* source = manifest.findFrame(frame);
+    if (source == nullptr || !store_.isCurrent(frame, source->crc32))
+        return false;
+    return options_.format != ExportFormat::Obj || !exportsSubgrid() ||
+           subgrid_.isCurrentIn(manifest, frame);
+}
+
 void SequenceExporter::checkReady(const std::vector<int>& frames) const {
     if (!needsPostResults(options_.format))
         return;
     const CacheManifest manifest = cache_.manifestSnapshot();
     std::vector<int> missing;
-    for (const int frame : frames) {
-        const CacheFrameEntry* source = manifest.findFrame(frame);
-        if (source == nullptr || !store_.isCurrent(frame, source->crc32))
+    for (const int frame : frames)
+        if (!hasPostResults(manifest, frame))
             missing.push_back(frame);
-    }
     if (!missing.empty())
         throw Error(ErrorKind::InvalidInput,
                     "frame(s) " + frameList(missing) + " of " + cache_.directory() +
-                        " have no current water mesh and volume (made by the post stage); run "
-                        "`airtrap-cli post " +
+                        " have no current post results (water mesh, volume, sub-grid "
+                        "bubbles); run `airtrap-cli post " +
                         cache_.directory() + "` first");
 }
 
@@ -87,6 +120,12 @@ void SequenceExporter::writeObjFiles(const FrameData& data, ExportReport& report
         ObjExporter::write(path(name), bubbles, options_.up, notes);
         report.files.push_back(name);
     }
+    if (exportsSubgrid()) {
+        const TriangleMesh spheres = spheresAt(subgrid_.readFrame(frame).bubbles, subgridSphere_);
+        const std::string name = sequenceFileName("subgrid", frame, "obj");
+        ObjExporter::write(path(name), {{"subgrid_bubbles", spheres}}, options_.up, notes);
+        report.files.push_back(name);
+    }
     const std::vector<NamedMesh> bodies = FrameSolids(solids_, data.state).meshes();
     if (!bodies.empty()) {
         const std::string name = sequenceFileName("bodies", frame, "obj");
@@ -109,6 +148,13 @@ void SequenceExporter::writePlyFiles(const FrameData& data, ExportReport& report
     const std::string bubbles = sequenceFileName("bubbles", frame, "ply");
     BubblePoints::write(path(bubbles), points, comments(data), options_.up);
     report.files.push_back(bubbles);
+    // Particles need no post run; the sub-grid bubbles come with it when one has made them.
+    if (!exportsSubgrid() || !subgrid_.isCurrentIn(cache_.manifestSnapshot(), frame))
+        return;
+    const std::string subgrid = sequenceFileName("subgrid", frame, "ply");
+    BubblePoints::write(path(subgrid), pointsOf(subgrid_.readFrame(frame).bubbles), comments(data),
+                        options_.up);
+    report.files.push_back(subgrid);
 }
 
 bool SequenceExporter::exportFrame(int frame, ExportReport& report) {

@@ -4,9 +4,12 @@
 //   ply  particles_0001.ply                 water particles (PlyExporter)
 //        bubbles_0001.ply                   bubbles as points for instancing (BubblePoints), when
 //                                           the scene simulates bubbles
+//        subgrid_0001.ply                   sub-grid bubbles as points, when the post stage has
+//                                           made the frame's (paper §4.2)
 //   obj  water_0001.obj                     the free-surface mesh from the post stage
 //        bubbles_0001.obj                   one oscillating ellipsoid per bubble (paper eqs. 7–10),
 //                                           when the scene simulates bubbles
+//        subgrid_0001.obj                   the sub-grid bubbles as small spheres, one object
 //        bodies_0001.obj                    obstacles and rigid bodies, when the scene has any
 //   vdb  fluid_0001.vdb                     surface, density and vel (VdbExporter)
 // Metres; y up, or z up on request. Every file is written atomically.
@@ -16,6 +19,7 @@
 #include "post/OscillatingBubbleMesh.h"
 #include "post/PostStore.h"
 #include "post/SceneSolids.h"
+#include "post/SubgridStore.h"
 #include "scene/Scene.h"
 
 #include <string>
@@ -61,6 +65,10 @@ private:
     std::vector<std::string> comments(const FrameData& data) const;
     void writeObjFiles(const FrameData& data, ExportReport& report) const;
     void writePlyFiles(const FrameData& data, ExportReport& report) const;
+    //! The scene makes sub-grid bubbles: it simulates bubbles and sheds some.
+    bool exportsSubgrid() const;
+    //! True when frame `frame` has every post result the format needs, current.
+    bool hasPostResults(const CacheManifest& manifest, int frame) const;
     std::string path(const std::string& name) const { return options_.outDir + "/" + name; }
 
     const FrameCache& cache_;
@@ -69,6 +77,8 @@ private:
     SceneSolids solids_;
     OscillatingBubbleMesh bubbleMesh_;
     PostStore store_;
+    SubgridStore subgrid_;
+    TriangleMesh subgridSphere_; //!< unit sphere each sub-grid bubble is scaled from in OBJ
 };
 
 } // namespace airtrap

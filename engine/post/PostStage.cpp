@@ -6,6 +6,7 @@
 #include "post/WaterVolume.h"
 #include "scene/SceneJson.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <tbb/parallel_for.h>
@@ -21,7 +22,8 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 } // namespace
 
 PostStage::PostStage(const FrameCache& cache, const Scene& scene)
-    : cache_(cache), scene_(scene), solids_(scene), store_(PostStore::open(cache.directory())) {
+    : cache_(cache), scene_(scene), solids_(scene), store_(PostStore::open(cache.directory())),
+      subgrid_(cache, scene) {
     store_.useSettings(settingsOf(scene_));
 }
 
@@ -66,6 +68,15 @@ void PostStage::makeFrame(int frame, Interrupter& interrupter, PostReport& repor
     report.secondsPerFrame += entry.seconds;
 }
 
+void PostStage::addSubgridBubbles(int lastFrame, Interrupter& interrupter, PostReport& report) {
+    report.subgrid = subgrid_.run(lastFrame, interrupter);
+    const std::string& damaged = report.subgrid.damaged;
+    // The surface pass has reported it already when the frame was one of its own.
+    if (!damaged.empty() &&
+        std::find(report.damaged.begin(), report.damaged.end(), damaged) == report.damaged.end())
+        report.damaged.push_back(damaged);
+}
+
 PostReport PostStage::run(const std::vector<int>& frames, Interrupter& interrupter) {
     const auto start = std::chrono::steady_clock::now();
     PostReport report;
@@ -81,7 +92,10 @@ PostReport PostStage::run(const std::vector<int>& frames, Interrupter& interrupt
         interrupter.wasInterrupted(100.0 * finished / double(frames.size()));
     });
     interrupter.end();
-    report.stopped = interrupter.stopRequested() && done < int(frames.size());
+    if (!frames.empty() && !interrupter.stopRequested())
+        addSubgridBubbles(*std::max_element(frames.begin(), frames.end()), interrupter, report);
+    report.stopped =
+        (interrupter.stopRequested() && done < int(frames.size())) || report.subgrid.stopped;
     report.seconds = secondsSince(start);
     if (report.made > 0)
         report.secondsPerFrame /= report.made;

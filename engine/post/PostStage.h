@@ -1,7 +1,8 @@
 #pragma once
 // `airtrap-cli post` and the editor's Post action (DESIGN §2: Scene → Simulation → FrameCache →
 // Post → Exporters): for each chosen cache frame, the water volume and its free-surface mesh
-// (paper §4.1), stored beside the cache (PostStore). Frames run in parallel; a frame whose stored
+// (paper §4.1), stored beside the cache (PostStore), then the sub-grid bubbles (§4.2,
+// SubgridPass). Frames run in parallel; a frame whose stored
 // result is current is skipped, so a second run after a longer bake only does the new frames,
 // and a run after a settings change redoes them all. Stops between frames and inside OpenVDB's
 // tools when asked; what finished is kept.
@@ -9,6 +10,7 @@
 #include "core/Interrupter.h"
 #include "post/PostStore.h"
 #include "post/SceneSolids.h"
+#include "post/SubgridPass.h"
 #include "scene/Scene.h"
 
 #include <string>
@@ -23,6 +25,7 @@ struct PostReport {
     double seconds = 0.0;             //!< wall time of the run
     double secondsPerFrame = 0.0;     //!< mean wall time of a frame made (threads included)
     bool stopped = false;
+    SubgridReport subgrid; //!< the sub-grid bubbles' pass, after the surfaces'
 };
 
 class PostStage {
@@ -35,20 +38,26 @@ public:
     //! The render settings as the store records them.
     static nlohmann::json settingsOf(const Scene& scene);
 
-    //! Makes the results of `frames` (listed cache frames). Progress goes to `interrupter` as the
-    //! share of `frames` done, under the stage name "post". Error(Io) stops the run.
+    //! Makes the results of `frames` (listed cache frames): their surfaces, then the sub-grid
+    //! bubbles of every frame up to the last of them. Progress goes to `interrupter` as the
+    //! share of `frames` done, under the stage name "post", then of the sub-grid frames under
+    //! "sub-grid bubbles". Error(Io) stops the run.
     PostReport run(const std::vector<int>& frames, Interrupter& interrupter);
 
     const PostStore& store() const { return store_; }
+    const SubgridStore& subgridStore() const { return subgrid_.store(); }
 
 private:
     //! Makes one frame's results, or records in `report` why not (current already, damaged).
     void makeFrame(int frame, Interrupter& interrupter, PostReport& report);
+    //! The sub-grid pass up to `lastFrame`, its damaged frame added to the report's list.
+    void addSubgridBubbles(int lastFrame, Interrupter& interrupter, PostReport& report);
 
     const FrameCache& cache_;
     Scene scene_;
     SceneSolids solids_;
     PostStore store_;
+    SubgridPass subgrid_;
     std::mutex reportMutex_;
 };
 

@@ -1,12 +1,12 @@
 #include "post/PostStore.h"
 
-#include "core/AtomicFile.h"
 #include "core/Error.h"
 #include "io/SequenceName.h"
 #include "io/VdbExporter.h"
+#include "post/FrameEntries.h"
+#include "post/ManifestJson.h"
 #include "post/MeshFile.h"
 
-#include <algorithm>
 #include <filesystem>
 
 namespace airtrap {
@@ -55,27 +55,14 @@ PostStore::PostStore(PostStore&& other) noexcept
 PostStore PostStore::open(const std::string& cacheDir) {
     const std::string dir = (std::filesystem::path(cacheDir) / kFolderName).string();
     const std::string path = dir + "/" + kManifestName;
-    if (!std::filesystem::exists(path))
+    const std::optional<nlohmann::json> json = readManifestJson(path, kFormatName, kFormatVersion);
+    if (!json)
         return PostStore(dir, nlohmann::json::object(), {});
-    const std::vector<std::uint8_t> bytes = AtomicFile::read(path);
-    nlohmann::json json;
-    try {
-        json = nlohmann::json::parse(bytes.begin(), bytes.end());
-    } catch (const nlohmann::json::exception& error) {
-        throw Error(ErrorKind::CacheCorrupt, path + ": not valid JSON (" + error.what() + ")");
-    }
-    if (!json.is_object() || json.value("format", "") != kFormatName)
-        throw Error(ErrorKind::CacheCorrupt, path + ": field 'format' is not \"airtrap-post\"");
-    if (json.value("format_version", 0) > kFormatVersion)
-        throw Error(ErrorKind::CacheCorrupt,
-                    path + ": format_version " + json["format_version"].dump() +
-                        ", this build reads " + std::to_string(kFormatVersion) + " at most");
     std::vector<PostFrameEntry> frames;
-    for (const nlohmann::json& entry : json.value("frames", nlohmann::json::array()))
+    for (const nlohmann::json& entry : json->value("frames", nlohmann::json::array()))
         frames.push_back(entryFromJson(entry, path));
-    std::sort(frames.begin(), frames.end(),
-              [](const PostFrameEntry& a, const PostFrameEntry& b) { return a.frame < b.frame; });
-    return PostStore(dir, json.value("settings", nlohmann::json::object()), std::move(frames));
+    sortByFrame(frames);
+    return PostStore(dir, json->value("settings", nlohmann::json::object()), std::move(frames));
 }
 
 std::string PostStore::manifestPath() const {
@@ -93,10 +80,7 @@ void PostStore::useSettings(const nlohmann::json& settings) {
 }
 
 const PostFrameEntry* PostStore::find(int frame) const {
-    const auto at = std::lower_bound(
-        frames_.begin(), frames_.end(), frame,
-        [](const PostFrameEntry& entry, int wanted) { return entry.frame < wanted; });
-    return at != frames_.end() && at->frame == frame ? &*at : nullptr;
+    return findFrame(frames_, frame);
 }
 
 bool PostStore::isCurrent(int frame, std::uint32_t sourceCrc32) const {
@@ -120,21 +104,11 @@ std::vector<int> PostStore::frames() const {
 
 void PostStore::writeFrame(const PostFrameEntry& entry, const TriangleMesh& freeSurface,
                            const WaterVolume& volume) {
-    std::error_code error;
-    std::filesystem::create_directories(dir_, error);
-    if (error)
-        throw Error(ErrorKind::Io,
-                    AtomicFile::errorMessage("cannot create folder", dir_, error.value()));
+    createResultFolder(dir_);
     MeshFile::write(dir_ + "/" + meshName(entry.frame), freeSurface);
     VdbExporter::write(dir_ + "/" + volumeName(entry.frame), volume, UpAxis::Y);
     const std::lock_guard lock(mutex_);
-    const auto at = std::lower_bound(
-        frames_.begin(), frames_.end(), entry.frame,
-        [](const PostFrameEntry& listed, int wanted) { return listed.frame < wanted; });
-    if (at != frames_.end() && at->frame == entry.frame)
-        *at = entry;
-    else
-        frames_.insert(at, entry);
+    putFrame(frames_, entry);
     writeManifest();
 }
 
@@ -159,12 +133,7 @@ void PostStore::writeManifest() const {
     nlohmann::json frames = nlohmann::json::array();
     for (const PostFrameEntry& entry : frames_)
         frames.push_back(entryToJson(entry));
-    const nlohmann::json json = {{"format", kFormatName},
-                                 {"format_version", kFormatVersion},
-                                 {"creator", "Airtrap " AIRTRAP_VERSION},
-                                 {"settings", settings_},
-                                 {"frames", frames}};
-    AtomicFile::write(manifestPath(), json.dump(2) + "\n");
+    writeManifestJson(manifestPath(), kFormatName, kFormatVersion, settings_, frames);
 }
 
 } // namespace airtrap

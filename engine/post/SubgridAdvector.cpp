@@ -52,6 +52,14 @@ void SubgridAdvector::advance(std::vector<SubgridBubble>& bubbles, const WaterVe
         if (!popped[i] && bubbles[i].age <= settings_.lifetime)
             bubbles[kept++] = bubbles[i];
     bubbles.resize(kept);
+    removeSurfaced(bubbles, water);
+}
+
+void SubgridAdvector::removeSurfaced(std::vector<SubgridBubble>& bubbles,
+                                     const WaterVelocityField& water) const {
+    std::erase_if(bubbles, [&](const SubgridBubble& bubble) {
+        return water.sample(bubble.position, particleVolume_).weight < kInWater;
+    });
 }
 
 } // namespace airtrap

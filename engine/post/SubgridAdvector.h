@@ -5,7 +5,6 @@
 // (second-order Runge–Kutta). A bubble that reaches air (less than half a particle's worth of
 // water around it) has surfaced and pops; one older than the lifetime is deleted too.
 #include "post/SubgridBubble.h"
-#include "post/SubgridBubbleSettings.h"
 #include "post/WaterVelocityField.h"
 #include "scene/Scene.h"
 
@@ -20,9 +19,11 @@ public:
     //! m/s, the capped Stokes rise speed of a bubble of `radius` m.
     double riseSpeed(double radius) const;
     //! Advances every bubble by `seconds` through `water` in the settings' substeps, then drops
-    //! the popped and the expired. Order of the survivors is kept.
+    //! the popped, the expired and those that end in air. Order of the survivors is kept.
     void advance(std::vector<SubgridBubble>& bubbles, const WaterVelocityField& water,
                  double seconds) const;
+    //! Drops the bubbles in air: they have reached the surface and popped.
+    void removeSurfaced(std::vector<SubgridBubble>& bubbles, const WaterVelocityField& water) const;
 
 private:
     //! Velocity of a bubble of `radius` at `x`; false in `inWater` where the water ends.

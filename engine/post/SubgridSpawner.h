@@ -9,7 +9,7 @@
 // bubbles whatever the order of frames or threads.
 #include "bubbles/BubbleState.h"
 #include "post/SubgridBubble.h"
-#include "post/SubgridBubbleSettings.h"
+#include "scene/Scene.h"
 
 #include <cstdint>
 #include <random>

@@ -9,6 +9,7 @@ using namespace schema;
 
 using SurfaceAccess = ObjectAccess<&Scene::surfaceMesh>;
 using BubbleMeshAccess = ObjectAccess<&Scene::bubbleMesh>;
+using SubgridAccess = ObjectAccess<&Scene::subgridBubbles>;
 
 } // namespace
 
@@ -99,6 +100,73 @@ SchemaSection bubbleMeshSection() {
                                     .defaultValue = 3.0,
                                     .help = "Oscillations within the duration (eq. 10)."},
                                    &BubbleMeshSettings::cycles),
+        });
+}
+
+SchemaSection subgridBubblesSection() {
+    return objectSection(
+        "subgrid_bubbles", "Sub-grid bubbles",
+        "Air too fine for the grid, added after the bake (paper §4.2): each new trapped bubble "
+        "sheds small bubbles around itself, more the less of it lies in water. They ride the "
+        "water's velocity, rise at their Stokes speed and pop at the surface.",
+        {
+            bind<SubgridAccess>({.key = "max_per_bubble",
+                                 .label = "Bubbles per bubble",
+                                 .minimum = 0,
+                                 .maximum = 126,
+                                 .defaultValue = 24LL,
+                                 .help = "Shed by a new bubble entirely in air; one in water "
+                                         "sheds in proportion to its surface in air. 0 sheds "
+                                         "none."},
+                                &SubgridBubbleSettings::maxPerBubble),
+            bind<SubgridAccess>({.key = "min_size",
+                                 .label = "Smallest radius",
+                                 .unit = "× parent radius",
+                                 .minimum = 0.01,
+                                 .maximum = 0.5,
+                                 .defaultValue = 0.15,
+                                 .help = "Radii are drawn between the smallest and the largest."},
+                                &SubgridBubbleSettings::minSize),
+            bind<SubgridAccess>({.key = "max_size",
+                                 .label = "Largest radius",
+                                 .unit = "× parent radius",
+                                 .minimum = 0.01,
+                                 .maximum = 0.5,
+                                 .defaultValue = 0.35,
+                                 .help = "At least the smallest radius."},
+                                &SubgridBubbleSettings::maxSize),
+            bind<SubgridAccess>({.key = "generations",
+                                 .label = "Generations",
+                                 .minimum = 1,
+                                 .maximum = 4,
+                                 .defaultValue = 1LL,
+                                 .help = "1: only trapped bubbles shed. Each more lets the last "
+                                         "generation shed smaller bubbles around itself."},
+                                &SubgridBubbleSettings::generations),
+            bind<SubgridAccess>({.key = "children_per_bubble",
+                                 .label = "Children per bubble",
+                                 .minimum = 0,
+                                 .maximum = 126,
+                                 .defaultValue = 3LL,
+                                 .help = "Shed by each sub-grid bubble of a generation before "
+                                         "the last."},
+                                &SubgridBubbleSettings::childrenPerBubble),
+            bind<SubgridAccess>({.key = "lifetime",
+                                 .label = "Lifetime",
+                                 .unit = "s",
+                                 .minimum = 0.01,
+                                 .maximum = 60.0,
+                                 .defaultValue = 3.0,
+                                 .help = "Older sub-grid bubbles are deleted even under water."},
+                                &SubgridBubbleSettings::lifetime),
+            bind<SubgridAccess>({.key = "substeps",
+                                 .label = "Steps per frame",
+                                 .minimum = 1,
+                                 .maximum = 32,
+                                 .defaultValue = 4LL,
+                                 .help = "Midpoint (RK2) steps between two frames. More follow "
+                                         "fast, curling water more closely."},
+                                &SubgridBubbleSettings::substeps),
         });
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // The declarations of the render outputs' settings (paper §4; DESIGN §4 "Free-surface mesh",
-// "Oscillating bubble mesh"). They shape what the post stage makes of a bake, not the bake, so
-// the cache's parameter hash leaves them out: changing them never asks for a re-bake.
+// "Oscillating bubble mesh", "Sub-grid bubbles"). They shape what the post stage makes of a bake,
+// not the bake, so the cache's parameter hash leaves them out: changing them never asks for a
+// re-bake.
 #include "scene/SchemaSection.h"
 
 namespace airtrap {
@@ -10,5 +11,7 @@ namespace airtrap {
 SchemaSection surfaceMeshSection();
 //! The `bubble_mesh` object section: the oscillating bubble mesh.
 SchemaSection bubbleMeshSection();
+//! The `subgrid_bubbles` object section: bubbles below the grid's resolution.
+SchemaSection subgridBubblesSection();
 
 } // namespace airtrap

@@ -140,6 +140,19 @@ struct BubbleMeshSettings {
     double cycles = 3.0;    //!< n: oscillations within T
 };
 
+//! The sub-grid bubbles (paper §4.2): how many a new trapped air bubble sheds, how big, how many
+//! generations, and how long they live. Their rise is the trapped bubbles' own (Stokes speed from
+//! `bubbles.kinematic_viscosity`, capped by `bubbles.max_rise_speed`).
+struct SubgridBubbleSettings {
+    int maxPerBubble = 24;     //!< shed by a new bubble entirely in air (area fraction 0); 0: none
+    double minSize = 0.15;     //!< smallest radius, as a share of the parent's
+    double maxSize = 0.35;     //!< largest radius, as a share of the parent's
+    int generations = 1;       //!< 1: from trapped bubbles only; each more sheds from the last
+    int childrenPerBubble = 3; //!< shed by a sub-grid bubble of a generation before the last
+    double lifetime = 3.0;     //!< s; older ones are deleted
+    int substeps = 4;          //!< RK2 steps per frame
+};
+
 struct Scene {
     static constexpr int kFormatVersion = 1;
 
@@ -156,6 +169,7 @@ struct Scene {
     BubbleSettings bubbles;
     SurfaceMeshSettings surfaceMesh;
     BubbleMeshSettings bubbleMesh;
+    SubgridBubbleSettings subgridBubbles;
 
     //! Where the scene was read from (not saved); used in messages.
     std::string sourcePath;

@@ -243,6 +243,7 @@ std::string parameterHash(const Scene& scene) {
     // The render outputs' settings shape the post stage only; the bake does not read them.
     canonical.erase("surface_mesh");
     canonical.erase("bubble_mesh");
+    canonical.erase("subgrid_bubbles");
     char hex[17];
     std::snprintf(hex, sizeof hex, "%016llx",
                   static_cast<unsigned long long>(fnv1a64(canonical.dump())));

@@ -390,6 +390,7 @@ std::vector<SchemaSection> buildSceneSections() {
     sections.push_back(bubblesSection());
     sections.push_back(surfaceMeshSection());
     sections.push_back(bubbleMeshSection());
+    sections.push_back(subgridBubblesSection());
     return sections;
 }
 

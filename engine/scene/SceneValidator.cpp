@@ -61,6 +61,7 @@ public:
         checkKeyframes();
         checkBubbles();
         checkSurfaceMesh();
+        checkSubgridBubbles();
         if (containerValid && issues_.ok())
             checkBodyPlacement();
         return issues_;
@@ -259,6 +260,14 @@ private:
                 "; particles narrower than 1.5 voxels would leave holes in the water mesh");
     }
 
+    void checkSubgridBubbles() {
+        const SubgridBubbleSettings& subgrid = scene_.subgridBubbles;
+        if (subgrid.minSize > subgrid.maxSize)
+            error("subgrid_bubbles.min_size = " + number(subgrid.minSize) +
+                  " exceeds subgrid_bubbles.max_size = " + number(subgrid.maxSize) +
+                  "; the radii are drawn between the two");
+    }
+
     void checkBodyNames() {
         for (std::size_t i = 0; i < scene_.bodies.size(); ++i)
             for (std::size_t j = 0; j < i; ++j)
@@ -338,6 +347,7 @@ std::vector<std::string> SceneValidator::ruleDescriptions() {
         "`bubbles.approach_restitution` is at most `bubbles.overlap_restitution` (ε₁ ≤ ε₂ ≤ 0); "
         "with bubbles enabled, `bubbles.max_rise_speed` is at most `solver.max_speed`.",
         "`surface_mesh.particle_radius` is at least 1.5 × `surface_mesh.voxel_size`.",
+        "`subgrid_bubbles.min_size` is at most `subgrid_bubbles.max_size`.",
         "Warnings, which do not stop a bake: fluid blocks that overlap each other or an "
         "obstacle, fluid blocks thinner than `particle_spacing`, emitters whose "
         "`max_particles` is less than one layer of their nozzle, and bodies that overlap the "

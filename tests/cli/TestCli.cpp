@@ -515,6 +515,54 @@ private Q_SLOTS:
         QVERIFY_CONTAINS(physics.err, "--set solver.cfl_factor=0.2: only the render settings");
     }
 
+    void postShedsSubgridBubblesThatExportWith() {
+        const std::string scene = writeScene("bubbles.json", tinyBubbleSceneText(4));
+        QCOMPARE_EXIT(runCli(args({"bake", scene, "--out", cache_})), 0);
+        // A bubble born in frame 3 inside the water, entirely in air at its birth: it sheds the
+        // most, and those of its sub-grid bubbles that lie in water stay.
+        FrameCache cache = FrameCache::open(cache_);
+        for (int number = 3; number <= 4; ++number) {
+            FrameData frame = cache.readFrame(number);
+            BubbleState bubble = bubbleAt(0, Vec3d(0.1, 0.07, 0.1), 0.02, Vec3d::Zero(), 0.0);
+            bubble.areaFractionInWater = 0.0;
+            frame.state.bubbles = {bubble};
+            frame.state.nextBubbleId = 1;
+            cache.writeFrame(frame.state, frame.stats);
+        }
+        const CliResult post = runCli(args({"post", cache_}));
+        QCOMPARE_EXIT(post, 0);
+        const nlohmann::json listed = readJson(cache_ + "/post/subgrid.json");
+        QCOMPARE(listed["frames"].size(), std::size_t(4));
+        const int shed = listed["frames"][2]["bubbles"].get<int>();
+        QVERIFY2(shed > 0 && shed <= 24, qPrintable(QString::number(shed)));
+        QCOMPARE(listed["frames"][1]["bubbles"].get<int>(), 0);
+        const int kept = listed["frames"][3]["bubbles"].get<int>();
+        QVERIFY_CONTAINS(post.out, "sub-grid bubbles: 4 frame(s) made; " + std::to_string(kept) +
+                                       " in frame 4");
+
+        const std::string out = path("out");
+        QCOMPARE_EXIT(runCli(args({"export", cache_, "--format", "ply", "--out", out})), 0);
+        const std::vector<std::uint8_t> ply = readBytes(out + "/subgrid_0003.ply");
+        const std::string header(ply.begin(), ply.end());
+        QVERIFY(header.find("\nelement vertex " + std::to_string(shed) + "\n") !=
+                std::string::npos);
+        QCOMPARE_EXIT(runCli(args({"export", cache_, "--format", "obj", "--out", out})), 0);
+        const std::vector<std::uint8_t> obj = readBytes(out + "/subgrid_0003.obj");
+        const std::string text(obj.begin(), obj.end());
+        QVERIFY(text.find("\no subgrid_bubbles\n") != std::string::npos);
+        std::size_t vertices = 0;
+        for (std::size_t at = text.find("\nv "); at != std::string::npos;
+             at = text.find("\nv ", at + 1))
+            ++vertices;
+        QCOMPARE(vertices, std::size_t(42 * shed)); // a once-subdivided icosahedron each
+
+        const CliResult fewer =
+            runCli(args({"post", cache_, "--set", "subgrid_bubbles.max_per_bubble=0"}));
+        QCOMPARE_EXIT(fewer, 0);
+        QVERIFY_CONTAINS(fewer.out, "post: 0 frame(s) made, 4 already current");
+        QVERIFY_CONTAINS(fewer.out, "sub-grid bubbles: 4 frame(s) made; 0 in frame 4");
+    }
+
     void aDamagedPostResultIsNamed() {
         bake(cache_);
         QCOMPARE_EXIT(runCli(args({"post", cache_})), 0);

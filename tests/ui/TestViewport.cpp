@@ -297,6 +297,33 @@ private Q_SLOTS:
         QCOMPARE(changed.outside, 0);
     }
 
+    void subgridBubblesAreDrawnAsSpheresWithTheBubbles() {
+        const auto viewport = shownViewport();
+        QVERIFY(viewport);
+        const Scene scene = damBreak();
+        viewport->setScene(scene);
+        viewport->setFrame(initialFrame(scene));
+        const QImage without = viewport->grabFramebuffer();
+        SubgridBubble small;
+        small.radius = 0.1;
+        small.position = Vec3d(1.6, 0.6, 0.2); // in the empty part of the tank
+        SubgridBubble other = small;
+        other.position = Vec3d(1.2, 0.6, 0.2);
+        viewport->setSubgridBubbles({small, other});
+        QCOMPARE(viewport->subgridBubbleCount(), 2);
+        QCOMPARE(viewport->bubbleCount(), 0);
+        const QImage image = viewport->grabFramebuffer();
+        const qreal ratio = viewport->devicePixelRatio();
+        for (const SubgridBubble& bubble : {small, other}) {
+            const QPointF centre = project(*viewport, toQt(bubble.position));
+            QCOMPARE(countAround(image, centre, 2, ratio, isBubble), 25);
+            QCOMPARE(countAround(without, centre, 2, ratio, isBubble), 0);
+        }
+        viewport->setSubgridBubbles({});
+        QCOMPARE(viewport->subgridBubbleCount(), 0);
+        QCOMPARE(viewport->grabFramebuffer(), without);
+    }
+
     void bubblesHaveAColourOfTheirOwn() {
         // At any shading no speed of the water and no body motion looks like a bubble.
         for (int step = 0; step <= 100; ++step) {

@@ -20,9 +20,19 @@ private Q_SLOTS:
         std::vector<std::string> keys;
         for (const SchemaSection& section : SceneSchema::sections())
             keys.push_back(section.key);
-        const std::vector<std::string> expected{
-            "",         "solver", "frames",    "container", "fluid_blocks", "obstacles",
-            "emitters", "bodies", "keyframes", "bubbles",   "surface_mesh", "bubble_mesh"};
+        const std::vector<std::string> expected{"",
+                                                "solver",
+                                                "frames",
+                                                "container",
+                                                "fluid_blocks",
+                                                "obstacles",
+                                                "emitters",
+                                                "bodies",
+                                                "keyframes",
+                                                "bubbles",
+                                                "surface_mesh",
+                                                "bubble_mesh",
+                                                "subgrid_bubbles"};
         QCOMPARE(keys, expected);
         QVERIFY(SceneSchema::findSection("fluid_blocks")->isArray);
         QVERIFY(!SceneSchema::findSection("solver")->isArray);

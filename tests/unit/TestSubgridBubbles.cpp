@@ -1,11 +1,19 @@
 // Sub-grid bubbles (paper §4.2): a new bubble sheds more of them the less of it lies in water,
 // on three spheres around it and outside it, the same ones for the same seed; later generations
 // are smaller; carried by the water they rise at their capped Stokes speed (the midpoint rule is
-// exact in a uniform flow), and pop where the water ends.
+// exact in a uniform flow), and pop where the water ends. The post pass keeps them per frame:
+// files round-trip exactly and refuse damage by name, frames are current only while every cache
+// frame up to theirs is unchanged, and a pass continued from a stored frame makes the same
+// bubbles as one run straight through.
 #include "core/Error.h"
 #include "post/SubgridAdvector.h"
+#include "post/SubgridFile.h"
+#include "post/SubgridPass.h"
 #include "post/SubgridSpawner.h"
+#include "scene/SceneJson.h"
+#include "sim/FrameStats.h"
 
+#include <QTemporaryDir>
 #include <QtTest>
 #include <cmath>
 
@@ -42,6 +50,48 @@ Scene sceneWithSpacing(double spacing) {
     scene.solver.particleSpacing = spacing;
     scene.bubbles.maxRiseSpeed = 0.25;
     return scene;
+}
+
+SubgridFrame someFrame() {
+    SubgridFrame frame;
+    frame.trappedIdsBelow = 5;
+    frame.nextId = 40;
+    std::uint32_t nextId = 0;
+    frame.bubbles = SubgridSpawner({}, 7).shed(newBubble(3, 0.0), nextId);
+    frame.bubbles[4].age = 0.125;
+    return frame;
+}
+
+void expectCorrupt(const std::vector<std::uint8_t>& bytes, const char* what) {
+    try {
+        SubgridFile::decode(bytes, "/c/post/subgrid_0007.atb");
+        QFAIL(what);
+    } catch (const Error& error) {
+        QCOMPARE(int(error.kind()), int(ErrorKind::CacheCorrupt));
+        QVERIFY2(std::string(error.what()).starts_with("/c/post/subgrid_0007.atb: "), error.what());
+    }
+}
+
+//! Frame `frame` of a cache of still water 0.4 m deep, in which trapped bubble 0 (entirely in
+//! air at its birth, so it sheds the most) appears from frame 2 on.
+SimulationState stillWaterFrame(int frame, const Scene& scene) {
+    SimulationState state;
+    state.frame = frame;
+    state.time = scene.frameTime(frame);
+    state.fluid = uniformWater(scene.solver.particleSpacing, 0.4, Vec3f::Zero());
+    if (frame >= 2) {
+        state.bubbles.push_back(newBubble(0, 0.0));
+        state.nextBubbleId = 1;
+    }
+    return state;
+}
+
+FrameCache stillWaterCache(const std::string& dir, const Scene& scene, int frames) {
+    FrameCache cache =
+        FrameCache::create(dir, sceneToJson(scene), parameterHash(scene), scene.frames.fps);
+    for (int frame = 1; frame <= frames; ++frame)
+        cache.writeFrame(stillWaterFrame(frame, scene), FrameStats());
+    return cache;
 }
 
 } // namespace
@@ -164,6 +214,90 @@ private Q_SLOTS:
         for (int frame = 0; frame < 30; ++frame)
             advector.advance(bubbles, field, 1.0 / 30.0);
         QVERIFY(bubbles.empty());
+    }
+
+    void aFrameFileRoundTripsExactlyAndRefusesDamage() {
+        const SubgridFrame frame = someFrame();
+        const std::vector<std::uint8_t> good = SubgridFile::encode(frame);
+        QCOMPARE(SubgridFile::decode(good, "file"), frame);
+        QCOMPARE(SubgridFile::decode(SubgridFile::encode({}), "empty"), SubgridFrame());
+        expectCorrupt({good.begin(), good.end() - 5}, "truncated");
+        std::vector<std::uint8_t> flipped = good;
+        flipped[200] ^= 0x04;
+        expectCorrupt(flipped, "one bit flipped");
+        std::vector<std::uint8_t> foreign = good;
+        foreign[1] = 'X';
+        expectCorrupt(foreign, "not a sub-grid file");
+    }
+
+    void storedFramesAreCurrentWhileTheirChainIsUnchanged() {
+        QTemporaryDir dir;
+        const std::string path = dir.path().toStdString();
+        CacheManifest manifest;
+        manifest.frames = {{1, "frame_0001.atf", 10, 0x11u}, {2, "frame_0002.atf", 10, 0x22u}};
+        const std::uint32_t chain1 = SubgridStore::chainCrc32(0, 0x11u);
+        const std::uint32_t chain2 = SubgridStore::chainCrc32(chain1, 0x22u);
+        QVERIFY(chain2 != SubgridStore::chainCrc32(SubgridStore::chainCrc32(0, 0x12u), 0x22u));
+        {
+            SubgridStore store = SubgridStore::open(path);
+            store.useSettings({{"max_per_bubble", 24}});
+            store.writeFrame({1, chain1, 0}, {});
+            store.writeFrame({2, chain2, 24}, someFrame());
+        }
+        SubgridStore store = SubgridStore::open(path);
+        QVERIFY(store.isCurrentIn(manifest, 1) && store.isCurrentIn(manifest, 2));
+        QCOMPARE(store.readFrame(2), someFrame());
+        manifest.frames[0].crc32 = 0x12u; // frame 1 was baked again: frame 2 came from the old one
+        QVERIFY(!store.isCurrentIn(manifest, 1) && !store.isCurrentIn(manifest, 2));
+        QVERIFY(!store.isCurrentIn(manifest, 3));
+        store.useSettings({{"max_per_bubble", 12}});
+        QVERIFY(SubgridStore::open(path).frames().empty());
+        QVERIFY_THROWS_EXCEPTION(Error, store.readFrame(2));
+    }
+
+    void thePassShedsOnceAndGoesOnFromAStoredFrame() {
+        const Scene scene = sceneWithSpacing(0.02);
+        QTemporaryDir straight;
+        const FrameCache cache = stillWaterCache(straight.path().toStdString(), scene, 4);
+        Interrupter interrupter;
+        SubgridPass pass(cache, scene);
+        const SubgridReport report = pass.run(4, interrupter);
+        QCOMPARE(report.made, 4);
+        QCOMPARE(report.lastFrame, 4);
+        QCOMPARE(report.lastFrameBubbles, 24u); // shed at its birth in frame 2, never again
+        const SubgridFrame second = pass.store().readFrame(2);
+        const SubgridFrame fourth = pass.store().readFrame(4);
+        QVERIFY(pass.store().readFrame(1).bubbles.empty());
+        QCOMPARE(second.trappedIdsBelow, 1u);
+        // Two frames of still water later, each has risen at its Stokes speed.
+        const SubgridAdvector advector(scene.subgridBubbles, scene);
+        for (std::size_t i = 0; i < fourth.bubbles.size(); ++i) {
+            const double risen = fourth.bubbles[i].position.y() - second.bubbles[i].position.y();
+            QVERIFY(std::abs(risen - 2.0 / scene.frames.fps *
+                                         advector.riseSpeed(fourth.bubbles[i].radius)) < 1e-9);
+        }
+
+        QTemporaryDir inSteps;
+        const FrameCache same = stillWaterCache(inSteps.path().toStdString(), scene, 4);
+        QCOMPARE(SubgridPass(same, scene).run(2, interrupter).made, 2);
+        const SubgridReport rest = SubgridPass(same, scene).run(4, interrupter);
+        QCOMPARE(rest.alreadyCurrent, 2);
+        QCOMPARE(rest.made, 2);
+        QCOMPARE(SubgridStore::open(same.directory()).readFrame(4), fourth);
+    }
+
+    void aRebakedFrameRemakesItAndTheFramesAfterIt() {
+        const Scene scene = sceneWithSpacing(0.02);
+        QTemporaryDir dir;
+        FrameCache cache = stillWaterCache(dir.path().toStdString(), scene, 4);
+        Interrupter interrupter;
+        SubgridPass(cache, scene).run(4, interrupter);
+        SimulationState rebaked = stillWaterFrame(3, scene);
+        rebaked.steps = 99;
+        cache.writeFrame(rebaked, FrameStats());
+        const SubgridReport report = SubgridPass(cache, scene).run(4, interrupter);
+        QCOMPARE(report.alreadyCurrent, 2);
+        QCOMPARE(report.made, 2);
     }
 };
 

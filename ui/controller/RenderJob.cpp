@@ -54,6 +54,7 @@ std::string RenderJob::runStages() {
     Scene scene = sceneFromJson(cache.manifest().scene, cache.manifestPath());
     scene.surfaceMesh = request_.surfaceMesh;
     scene.bubbleMesh = request_.bubbleMesh;
+    scene.subgridBubbles = request_.subgridBubbles;
     const std::vector<int> frames =
         framesIn(cache.frames(), request_.firstFrame, request_.lastFrame);
     if (frames.empty())
@@ -61,9 +62,12 @@ std::string RenderJob::runStages() {
 
     PostStage post(cache, scene);
     const PostReport made = post.run(frames, interrupter_);
-    char line[160];
-    std::snprintf(line, sizeof line, "post: %d frame(s) made, %d already current", made.made,
-                  made.alreadyCurrent);
+    char line[200];
+    std::snprintf(line, sizeof line,
+                  "post: %d frame(s) made, %d already current; sub-grid bubbles: %d frame(s) "
+                  "made, %u in frame %d",
+                  made.made, made.alreadyCurrent, made.subgrid.made, made.subgrid.lastFrameBubbles,
+                  made.subgrid.lastFrame);
     std::string summary = line;
     for (const std::string& problem : made.damaged)
         summary += "; skipped " + problem;

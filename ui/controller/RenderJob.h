@@ -18,6 +18,7 @@ struct RenderRequest {
     std::string cacheDir;
     SurfaceMeshSettings surfaceMesh; //!< the document's render settings
     BubbleMeshSettings bubbleMesh;
+    SubgridBubbleSettings subgridBubbles;
     //! Export these after the post stage; none: post only.
     std::vector<ExportFormat> formats;
     std::string outDir;

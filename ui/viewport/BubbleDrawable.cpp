@@ -78,15 +78,28 @@ void BubbleDrawable::setShape(const BubbleMeshSettings& settings) {
 }
 
 void BubbleDrawable::setBubbles(const std::vector<BubbleState>& bubbles) {
-    instances_.clear();
-    instances_.reserve(bubbles.size());
+    trapped_.clear();
+    trapped_.reserve(bubbles.size());
     for (const BubbleState& bubble : bubbles) {
         const Vec3d& centre = bubble.body.position;
         const Quatd turn = OscillatingBubbleMesh::alignment(bubble.body.linearVelocity);
         const Vec3d axes = shape_.semiAxes(bubble.radius, bubble.age);
-        instances_.push_back({{float(centre.x()), float(centre.y()), float(centre.z())},
-                              {float(turn.x()), float(turn.y()), float(turn.z()), float(turn.w())},
-                              {float(axes.x()), float(axes.y()), float(axes.z())}});
+        trapped_.push_back({{float(centre.x()), float(centre.y()), float(centre.z())},
+                            {float(turn.x()), float(turn.y()), float(turn.z()), float(turn.w())},
+                            {float(axes.x()), float(axes.y()), float(axes.z())}});
+    }
+    dirty_ = true;
+}
+
+void BubbleDrawable::setSubgridBubbles(const std::vector<SubgridBubble>& bubbles) {
+    subgrid_.clear();
+    subgrid_.reserve(bubbles.size());
+    for (const SubgridBubble& bubble : bubbles) {
+        const Vec3f centre = bubble.position.cast<float>();
+        const auto radius = float(bubble.radius);
+        subgrid_.push_back({{centre.x(), centre.y(), centre.z()},
+                            {0.0f, 0.0f, 0.0f, 1.0f},
+                            {radius, radius, radius}});
     }
     dirty_ = true;
 }
@@ -135,10 +148,12 @@ void BubbleDrawable::uploadSphere() {
 void BubbleDrawable::uploadInstances() {
     static_assert(sizeof(Instance) == 10 * sizeof(float), "instances go to the GPU as they are");
     dirty_ = false;
+    uploaded_ = trapped_;
+    uploaded_.insert(uploaded_.end(), subgrid_.begin(), subgrid_.end());
     instanceBuffer_.bind();
-    instanceBuffer_.allocate(instances_.data(), int(instances_.size() * sizeof(Instance)));
+    instanceBuffer_.allocate(uploaded_.data(), int(uploaded_.size() * sizeof(Instance)));
     instanceBuffer_.release();
-    uploadedCount_ = int(instances_.size());
+    uploadedCount_ = int(uploaded_.size());
 }
 
 void BubbleDrawable::draw(const RenderContext& context) {

@@ -135,6 +135,11 @@ void ViewportWidget::setWaterSurface(std::shared_ptr<const TriangleMesh> mesh) {
     update();
 }
 
+void ViewportWidget::setSubgridBubbles(const std::vector<SubgridBubble>& bubbles) {
+    bubbleDrawable_.setSubgridBubbles(bubbles);
+    update();
+}
+
 void ViewportWidget::setShowSurface(bool show) {
     showSurface_ = show;
     update();

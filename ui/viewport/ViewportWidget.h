@@ -65,6 +65,8 @@ public:
     float speedScale() const { return particles_.effectiveSpeedScale(); }
     //! Bubbles of the shown frame that the view draws.
     int bubbleCount() const { return bubbleDrawable_.bubbleCount(); }
+    //! Sub-grid bubbles drawn now.
+    int subgridBubbleCount() const { return bubbleDrawable_.subgridBubbleCount(); }
     //! Triangles of the free-surface mesh drawn now (0: none shown).
     int surfaceTriangleCount() const { return showSurface_ ? surface_.triangleCount() : 0; }
     //! The scene's bodies where the view shows them now (scene or frame poses).
@@ -97,6 +99,8 @@ public Q_SLOTS:
     void setShowWater(bool show);
     //! Shows this free-surface mesh of the shown frame (null: none), over everything else.
     void setWaterSurface(std::shared_ptr<const airtrap::TriangleMesh> mesh);
+    //! Shows these sub-grid bubbles of the shown frame with its bubbles (empty: none).
+    void setSubgridBubbles(const std::vector<airtrap::SubgridBubble>& bubbles);
     void setShowSurface(bool show);
     //! Translucent (the default) or opaque water surface.
     void setSurfaceTransparent(bool transparent);

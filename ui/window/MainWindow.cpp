@@ -11,7 +11,7 @@
 #include "scene/SceneJson.h"
 #include "scene/SceneSchema.h"
 #include "timeline/FrameLoader.h"
-#include "timeline/SurfaceLoader.h"
+#include "timeline/PostResultLoader.h"
 #include "timeline/TimelineWidget.h"
 #include "viewport/ViewportWidget.h"
 #include "window/BakeSession.h"
@@ -103,12 +103,13 @@ void MainWindow::createParts() {
         new RenderSession(*document_, *renderController_, *log_, *actions_, *statusBar(), this);
     renderSession_->setCacheDirectoryProvider([this] { return cacheDirectory(); });
     renderSession_->setLastCachedFrameProvider([this] { return bakeSession_->lastCachedFrame(); });
-    surfaceLoader_ = new SurfaceLoader(this);
-    connect(surfaceLoader_, &SurfaceLoader::surfaceLoaded, this,
-            [this](int frame, std::shared_ptr<const TriangleMesh> mesh) {
+    postResultLoader_ = new PostResultLoader(this);
+    connect(postResultLoader_, &PostResultLoader::resultsLoaded, this,
+            [this](int frame, const PostFrameResults& results) {
                 if (frame != timeline_->currentFrame())
                     return;
-                viewport_->setWaterSurface(std::move(mesh));
+                viewport_->setWaterSurface(results.surface);
+                viewport_->setSubgridBubbles(results.subgridBubbles);
                 Q_EMIT frameShown(frame);
             });
     // New meshes for the frame on screen: show them.
@@ -498,6 +499,7 @@ void MainWindow::onTimelineFrameChanged(int frame) {
     }
     viewport_->setFrame(nullptr);
     viewport_->setWaterSurface(nullptr);
+    viewport_->setSubgridBubbles({});
     statusFields_->showFrameNumber(frame, document_->scene().frames.fps);
 }
 
@@ -507,8 +509,8 @@ void MainWindow::onFrameLoaded(int frame, std::shared_ptr<const FrameData> data)
         return;
     statusFields_->showFrame(frame, *data);
     viewport_->setFrame(std::move(data));
-    // frameShown() follows once the frame's water surface (or its absence) is known too.
-    surfaceLoader_->request(cacheDirectory(), frame);
+    // frameShown() follows once the frame's post results (or their absence) are known too.
+    postResultLoader_->request(cacheDirectory(), frame);
 }
 
 // --- Window -------------------------------------------------------------------------------------

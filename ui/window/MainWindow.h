@@ -24,7 +24,7 @@ class ParameterPanel;
 class RecentFiles;
 class RenderOutputController;
 class RenderSession;
-class SurfaceLoader;
+class PostResultLoader;
 class SceneDocument;
 class SceneTreePanel;
 class SimulationController;
@@ -134,7 +134,7 @@ private:
     SimulationController* controller_ = nullptr;
     RenderOutputController* renderController_ = nullptr;
     RenderSession* renderSession_ = nullptr;
-    SurfaceLoader* surfaceLoader_ = nullptr;
+    PostResultLoader* postResultLoader_ = nullptr;
     FrameLoader* loader_ = nullptr;
     BakeSession* bakeSession_ = nullptr;
     LogPanel* log_ = nullptr;

@@ -80,6 +80,7 @@ void RenderSession::run(RenderRequest request) {
     request.cacheDir = cacheDirectory_().toStdString();
     request.surfaceMesh = document_.scene().surfaceMesh;
     request.bubbleMesh = document_.scene().bubbleMesh;
+    request.subgridBubbles = document_.scene().subgridBubbles;
     log_.info(request.formats.empty()
                   ? tr("Making render outputs of %1").arg(QString::fromStdString(request.cacheDir))
                   : tr("Exporting %1 into %2")
