@@ -37,7 +37,9 @@ void PostCommand::summariseSubgrid(const SubgridReport& report) const {
         std::cout << ", " << report.alreadyCurrent << " already current";
     if (report.lastFrame > 0)
         std::cout << "; " << report.lastFrameBubbles << " in frame " << report.lastFrame;
-    std::cout << '\n';
+    char seconds[32];
+    std::snprintf(seconds, sizeof seconds, "%.2f", report.seconds);
+    std::cout << " (" << seconds << " s)\n";
 }
 
 ExitCode PostCommand::summarise(const PostReport& report, const std::string& storeDir) const {

@@ -41,9 +41,9 @@ SubgridFrame SubgridPass::step(const SubgridFrame& previous, const SimulationSta
         return next; // nothing to carry: spare binning the water
     const WaterVelocityField water(state.fluid, scene_.supportRadius());
     if (seconds > 0.0)
-        advector_.advance(next.bubbles, water, seconds);
-    // The shells reach past the water's surface; bubbles placed in air have already popped.
-    advector_.removeSurfaced(born, water);
+        advector_.advance(next.bubbles, water, state.bubbles, seconds);
+    // The shells may reach past the water's surface; bubbles placed there have already popped.
+    advector_.removeSurfaced(born, water, state.bubbles);
     next.bubbles.insert(next.bubbles.end(), born.begin(), born.end());
     return next;
 }

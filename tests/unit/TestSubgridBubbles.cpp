@@ -183,7 +183,7 @@ private Q_SLOTS:
         std::vector<SubgridBubble> bubbles(1);
         bubbles[0].position = Vec3d(0.5, 0.2, 0.5);
         bubbles[0].radius = small;
-        advector.advance(bubbles, field, 1.0 / 30.0);
+        advector.advance(bubbles, field, {}, 1.0 / 30.0);
         QCOMPARE(bubbles.size(), std::size_t(1));
         const double risen = bubbles[0].position.y() - 0.2;
         QVERIFY2(std::abs(risen - advector.riseSpeed(small) / 30.0) < 1e-6,
@@ -205,15 +205,39 @@ private Q_SLOTS:
         bubbles[1].id = 2;
         bubbles[1].position = Vec3d(0.3, 0.45, 0.5); // above the water
         bubbles[1].radius = 0.001;
-        advector.advance(bubbles, field, 0.1);
+        advector.advance(bubbles, field, {}, 0.1);
         QCOMPARE(bubbles.size(), std::size_t(1));
         QCOMPARE(bubbles[0].id, 1u);
         QVERIFY(std::abs(bubbles[0].position.x() - 0.33) < 1e-6);
         QVERIFY(std::abs(bubbles[0].position.y() - 0.225) < 1e-6);
         // Risen to the surface, it pops there.
         for (int frame = 0; frame < 30; ++frame)
-            advector.advance(bubbles, field, 1.0 / 30.0);
+            advector.advance(bubbles, field, {}, 1.0 / 30.0);
         QVERIFY(bubbles.empty());
+    }
+
+    void theAirPocketAroundATrappedBubbleIsNotTheSurface() {
+        const double spacing = 0.02;
+        const Scene scene = sceneWithSpacing(spacing);
+        const Vec3d centre(0.5, 0.2, 0.5);
+        ParticleSet water;
+        const ParticleSet full = uniformWater(spacing, 0.4, Vec3f::Zero());
+        for (std::size_t i = 0; i < full.size(); ++i) // the pocket: no water within 6 cm
+            if ((full.positions[i].cast<double>() - centre).norm() > 0.06)
+                water.push(full.positions[i], Vec3f::Zero(), 1000.0f, std::uint32_t(i));
+        const WaterVelocityField field(water, scene.supportRadius());
+        BubbleState trapped = newBubble(0, 0.0);
+        trapped.body.position = centre;
+        trapped.radius = 0.03;
+        std::vector<SubgridBubble> inGap(1);
+        inGap[0].position = centre + Vec3d(0.04, 0.0, 0.0);
+        inGap[0].radius = 0.005;
+        const SubgridAdvector advector({}, scene);
+        std::vector<SubgridBubble> kept = inGap;
+        advector.removeSurfaced(kept, field, {trapped});
+        QCOMPARE(kept.size(), std::size_t(1));
+        advector.removeSurfaced(inGap, field, {}); // the same gap with its bubble gone: air
+        QVERIFY(inGap.empty());
     }
 
     void aFrameFileRoundTripsExactlyAndRefusesDamage() {
