@@ -6,6 +6,7 @@
 // source frame was re-baked, or whose settings changed, is stale: not current, made again by the
 // next post run. Files are written atomically and listed only once complete, as the cache's own
 // frames are, so a stopped run loses nothing it finished.
+#include "post/ResultList.h"
 #include "post/WaterVolume.h"
 #include "rigid/TriangleMesh.h"
 
@@ -22,6 +23,9 @@ struct PostFrameEntry {
     std::uint32_t sourceCrc32 = 0; //!< of the cache frame it was made from
     std::uint64_t triangles = 0;   //!< of the free-surface mesh
     double seconds = 0.0;          //!< wall time it took
+
+    nlohmann::json toJson() const;
+    static PostFrameEntry fromJson(const nlohmann::json& json);
 };
 
 class PostStore {
@@ -41,7 +45,7 @@ public:
     //! Adopts `settings` (the render settings as JSON). When they differ from the listed results'
     //! settings, every listed frame is unlisted: made with other settings, it is stale.
     void useSettings(const nlohmann::json& settings);
-    const nlohmann::json& settings() const { return settings_; }
+    const nlohmann::json& settings() const { return results_.settings(); }
 
     //! True when `frame` is listed and was made from the cache frame with this checksum.
     bool isCurrent(int frame, std::uint32_t sourceCrc32) const;
@@ -58,17 +62,14 @@ public:
     WaterVolume readVolume(int frame) const;
 
     const std::string& directory() const { return dir_; }
-    std::string manifestPath() const;
+    const std::string& manifestPath() const { return results_.path(); }
 
 private:
-    PostStore(std::string dir, nlohmann::json settings, std::vector<PostFrameEntry> frames);
-    const PostFrameEntry* find(int frame) const;
+    PostStore(std::string dir, ResultList<PostFrameEntry> results);
     void requireListed(int frame) const;
-    void writeManifest() const;
 
     std::string dir_;
-    nlohmann::json settings_;
-    std::vector<PostFrameEntry> frames_; //!< sorted by frame
+    ResultList<PostFrameEntry> results_;
     mutable std::mutex mutex_;
 };
 

@@ -6,6 +6,7 @@
 // to it: re-baking any earlier frame makes it stale. Separate from the surface results' post.json
 // so that tuning the sub-grid bubbles never throws away the slower water meshes.
 #include "cache/CacheManifest.h"
+#include "post/ResultList.h"
 #include "post/SubgridFrame.h"
 
 #include <cstdint>
@@ -19,6 +20,9 @@ struct SubgridFrameEntry {
     int frame = 0;
     std::uint32_t chainCrc32 = 0; //!< chainCrc32 of the cache frames up to this one
     std::uint32_t bubbles = 0;    //!< how many sub-grid bubbles the frame holds
+
+    nlohmann::json toJson() const;
+    static SubgridFrameEntry fromJson(const nlohmann::json& json);
 };
 
 class SubgridStore {
@@ -52,15 +56,13 @@ public:
     SubgridFrame readFrame(int frame) const;
 
     const std::string& directory() const { return dir_; }
-    std::string manifestPath() const;
+    const std::string& manifestPath() const { return results_.path(); }
 
 private:
-    SubgridStore(std::string dir, nlohmann::json settings, std::vector<SubgridFrameEntry> frames);
-    void writeManifest() const;
+    SubgridStore(std::string dir, ResultList<SubgridFrameEntry> results);
 
     std::string dir_;
-    nlohmann::json settings_;
-    std::vector<SubgridFrameEntry> frames_; //!< sorted by frame
+    ResultList<SubgridFrameEntry> results_;
 };
 
 } // namespace airtrap
