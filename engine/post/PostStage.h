@@ -45,7 +45,6 @@ public:
     PostReport run(const std::vector<int>& frames, Interrupter& interrupter);
 
     const PostStore& store() const { return store_; }
-    const SubgridStore& subgridStore() const { return subgrid_.store(); }
 
 private:
     //! Makes one frame's results, or records in `report` why not (current already, damaged).
