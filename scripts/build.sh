@@ -8,6 +8,11 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="$root/build"
 
 options=(-DCMAKE_BUILD_TYPE=Release)
+# Ninja schedules every target's files in one queue, so the tests compile while the engine's
+# longest files finish. A build folder keeps the generator it was made with.
+if [[ ! -f "$build/CMakeCache.txt" ]]; then
+    options+=(-G Ninja)
+fi
 if [[ -n "${CI:-}" ]]; then
     options+=(-DAIRTRAP_WERROR=ON)
 fi

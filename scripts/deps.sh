@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
     # toolchain
-    cmake g++ make pkg-config
+    cmake g++ make ninja-build pkg-config
     # engine
     libeigen3-dev libtbb-dev libopenvdb-dev libboost-iostreams-dev zlib1g-dev libassimp-dev
     nlohmann-json3-dev libcli11-dev

@@ -90,7 +90,7 @@ std::string hex32(std::uint32_t value) {
     return text;
 }
 
-[[noreturn]] void corrupt(const std::string& path, const std::string& what) {
+[[noreturn]] void corruptCache(const std::string& path, const std::string& what) {
     throw Error(ErrorKind::CacheCorrupt, path + ": " + what);
 }
 
@@ -101,7 +101,7 @@ std::vector<std::uint8_t> readListedFile(const std::string& path) {
     } catch (const Error&) {
         std::error_code error;
         if (!fs::exists(path, error) && !error)
-            corrupt(path, "missing (listed in " + std::string(CacheManifest::kFileName) + ")");
+            corruptCache(path, "missing (listed in " + std::string(CacheManifest::kFileName) + ")");
         throw;
     }
 }
@@ -110,10 +110,10 @@ void checkAgainstEntry(const std::vector<std::uint8_t>& bytes, const CacheFrameE
                        const std::string& path) {
     const std::uint32_t crc = computeCrc32(bytes.data(), bytes.size());
     if (bytes.size() != entry.bytes || crc != entry.crc32)
-        corrupt(path, "does not match " + std::string(CacheManifest::kFileName) + " (expected " +
-                          std::to_string(entry.bytes) + " bytes, CRC-32 " + hex32(entry.crc32) +
-                          "; found " + std::to_string(bytes.size()) + " bytes, CRC-32 " +
-                          hex32(crc) + ")");
+        corruptCache(path, "does not match " + std::string(CacheManifest::kFileName) +
+                               " (expected " + std::to_string(entry.bytes) + " bytes, CRC-32 " +
+                               hex32(entry.crc32) + "; found " + std::to_string(bytes.size()) +
+                               " bytes, CRC-32 " + hex32(crc) + ")");
 }
 
 } // namespace
@@ -227,13 +227,13 @@ FrameData FrameCache::readFrame(int frame) const {
     const std::string path = dir_ + "/" + entry.file;
     const std::vector<std::uint8_t> bytes = readListedFile(path);
     if (bytes.size() < entry.bytes)
-        corrupt(path, "truncated: expected " + std::to_string(entry.bytes) + " bytes, found " +
-                          std::to_string(bytes.size()));
+        corruptCache(path, "truncated: expected " + std::to_string(entry.bytes) + " bytes, found " +
+                               std::to_string(bytes.size()));
     FrameData data = decodeFrame(bytes, path);
     checkAgainstEntry(bytes, entry, path);
     if (data.state.frame != frame)
-        corrupt(path, "holds frame " + std::to_string(data.state.frame) + ", expected frame " +
-                          std::to_string(frame));
+        corruptCache(path, "holds frame " + std::to_string(data.state.frame) + ", expected frame " +
+                               std::to_string(frame));
     return data;
 }
 

@@ -30,7 +30,7 @@ constexpr char kAttributeTag[] = "PATT";
 constexpr char kBodyTag[] = "BODY";
 constexpr std::size_t kBodyRecordSize = RigidBodyRecord::kSize;
 
-[[noreturn]] void corrupt(const std::string& path, const std::string& what) {
+[[noreturn]] void corruptFrame(const std::string& path, const std::string& what) {
     throw Error(ErrorKind::CacheCorrupt, path + ": " + what);
 }
 
@@ -95,8 +95,7 @@ void writeBodyChunk(ByteWriter& out, const std::vector<RigidBodyState>& bodies) 
 
 void writeBubbleChunk(ByteWriter& out, const SimulationState& state, const FrameStats& stats) {
     const std::size_t at = beginChunk(out, BubbleChunk::kTag);
-    BubbleChunk::write(out, state.bubbles, state.nextBubbleId, state.bubblesDeleted,
-                       stats.bubbles);
+    BubbleChunk::write(out, state.bubbles, state.nextBubbleId, state.bubblesDeleted, stats.bubbles);
     endChunk(out, at);
 }
 
@@ -160,23 +159,23 @@ std::string printableTag(const std::uint8_t* tag) {
 //! message: a flipped version byte is "corrupt", not "written by a newer Airtrap".
 Header readHeader(const std::vector<std::uint8_t>& bytes, const std::string& path) {
     if (bytes.size() < kFrameHeaderSize)
-        corrupt(path, "truncated: expected at least " + std::to_string(kFrameHeaderSize) +
-                          " bytes, found " + std::to_string(bytes.size()));
+        corruptFrame(path, "truncated: expected at least " + std::to_string(kFrameHeaderSize) +
+                               " bytes, found " + std::to_string(bytes.size()));
     if (std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0)
-        corrupt(path, "not an Airtrap frame file (wrong magic)");
+        corruptFrame(path, "not an Airtrap frame file (wrong magic)");
     Header header;
     header.headerCrc = get<std::uint32_t>(bytes, kHeaderCrcOffset);
     if (computeCrc32(bytes.data(), kHeaderCrcOffset) != header.headerCrc)
-        corrupt(path, "checksum mismatch in the header");
+        corruptFrame(path, "checksum mismatch in the header");
     header.version = get<std::uint32_t>(bytes, kVersionOffset);
     if (header.version > kFrameFormatVersion)
-        corrupt(path, "written by a newer Airtrap (frame format version " +
-                          std::to_string(header.version) + ", this build reads up to " +
-                          std::to_string(kFrameFormatVersion) + ")");
+        corruptFrame(path, "written by a newer Airtrap (frame format version " +
+                               std::to_string(header.version) + ", this build reads up to " +
+                               std::to_string(kFrameFormatVersion) + ")");
     header.headerSize = get<std::uint32_t>(bytes, kHeaderSizeOffset);
     if (header.version == 0 || header.headerSize != kFrameHeaderSize)
-        corrupt(path, "invalid header (version " + std::to_string(header.version) +
-                          ", header size " + std::to_string(header.headerSize) + ")");
+        corruptFrame(path, "invalid header (version " + std::to_string(header.version) +
+                               ", header size " + std::to_string(header.headerSize) + ")");
     header.frame = get<std::int32_t>(bytes, kFrameOffset);
     header.payloadSize = get<std::uint64_t>(bytes, kPayloadSizeOffset);
     header.payloadCrc = get<std::uint32_t>(bytes, kPayloadCrcOffset);
@@ -187,15 +186,15 @@ void checkPayload(const std::vector<std::uint8_t>& bytes, const Header& header,
                   const std::string& path) {
     const std::uint64_t available = bytes.size() - kFrameHeaderSize;
     if (header.payloadSize > available)
-        corrupt(path, "truncated: expected " +
-                          std::to_string(kFrameHeaderSize + header.payloadSize) + " bytes, found " +
-                          std::to_string(bytes.size()));
+        corruptFrame(path, "truncated: expected " +
+                               std::to_string(kFrameHeaderSize + header.payloadSize) +
+                               " bytes, found " + std::to_string(bytes.size()));
     if (header.payloadSize < available)
-        corrupt(path, "unexpected trailing data: expected " +
-                          std::to_string(kFrameHeaderSize + header.payloadSize) + " bytes, found " +
-                          std::to_string(bytes.size()));
+        corruptFrame(path, "unexpected trailing data: expected " +
+                               std::to_string(kFrameHeaderSize + header.payloadSize) +
+                               " bytes, found " + std::to_string(bytes.size()));
     if (computeCrc32(bytes.data() + kFrameHeaderSize, header.payloadSize) != header.payloadCrc)
-        corrupt(path, "checksum mismatch in the frame data");
+        corruptFrame(path, "checksum mismatch in the frame data");
 }
 
 std::vector<Chunk> splitChunks(const std::vector<std::uint8_t>& bytes, const std::string& path) {
@@ -204,13 +203,13 @@ std::vector<Chunk> splitChunks(const std::vector<std::uint8_t>& bytes, const std
                       path + ": chunk list");
     while (reader.remaining() > 0) {
         if (reader.remaining() < kChunkHeaderSize)
-            corrupt(path, "incomplete chunk header at payload offset " +
-                              std::to_string(reader.position()));
+            corruptFrame(path, "incomplete chunk header at payload offset " +
+                                   std::to_string(reader.position()));
         const std::string tag = printableTag(reader.take(4));
         const std::uint64_t size = reader.u64();
         if (size > reader.remaining())
-            corrupt(path, "chunk " + tag + " is " + std::to_string(size) + " bytes, only " +
-                              std::to_string(reader.remaining()) + " remain");
+            corruptFrame(path, "chunk " + tag + " is " + std::to_string(size) + " bytes, only " +
+                                   std::to_string(reader.remaining()) + " remain");
         chunks.push_back({tag, reader.take(size), size});
     }
     return chunks;
@@ -240,7 +239,7 @@ void readStatsChunk(const Chunk& chunk, FrameStats& stats, const std::string& pa
         std::string name = in.string();
         const double seconds = in.f64();
         if (!stats.phaseSeconds.emplace(std::move(name), seconds).second)
-            corrupt(path, "chunk FSTA lists a phase twice");
+            corruptFrame(path, "chunk FSTA lists a phase twice");
     }
 }
 
@@ -252,8 +251,9 @@ void readBodyChunk(const Chunk& chunk, std::vector<RigidBodyState>& bodies,
     const std::uint32_t count = in.u32();
     const std::uint64_t expected = sizeof(std::uint32_t) + std::uint64_t(count) * kBodyRecordSize;
     if (chunk.size != expected)
-        corrupt(path, "chunk BODY is " + std::to_string(chunk.size) + " bytes, expected " +
-                          std::to_string(expected) + " for " + std::to_string(count) + " bodies");
+        corruptFrame(path, "chunk BODY is " + std::to_string(chunk.size) + " bytes, expected " +
+                               std::to_string(expected) + " for " + std::to_string(count) +
+                               " bodies");
     bodies.reserve(count);
     for (std::uint32_t i = 0; i < count; ++i)
         bodies.push_back(RigidBodyRecord::read(in));
@@ -271,10 +271,10 @@ void readAttributeChunk(const Chunk& chunk, std::map<std::string, AttributeChunk
     // size must still add up so that corruption is not mistaken for a newer file.
     if (elementSize != 0 &&
         (count > in.remaining() / elementSize || count * elementSize != in.remaining()))
-        corrupt(path, what + ": " + std::to_string(count) + " elements do not fit its " +
-                          std::to_string(in.remaining()) + " bytes");
+        corruptFrame(path, what + ": " + std::to_string(count) + " elements do not fit its " +
+                               std::to_string(in.remaining()) + " bytes");
     if (!attributes.emplace(name, AttributeChunk{type, count, in.take(in.remaining())}).second)
-        corrupt(path, what + " appears twice");
+        corruptFrame(path, what + " appears twice");
 }
 
 //! Checks every attribute this build knows against the file before anything is allocated.
@@ -282,17 +282,17 @@ void checkAttributes(const std::map<std::string, AttributeChunk>& attributes,
                      std::uint64_t particleCount, const std::string& path) {
     for (const auto& [name, chunk] : attributes)
         if (chunk.count != particleCount)
-            corrupt(path, "attribute '" + name + "' has " + std::to_string(chunk.count) +
-                              " elements, the frame has " + std::to_string(particleCount) +
-                              " particles");
+            corruptFrame(path, "attribute '" + name + "' has " + std::to_string(chunk.count) +
+                                   " elements, the frame has " + std::to_string(particleCount) +
+                                   " particles");
     for (const ParticleAttribute& expected : ParticleSet().attributes()) {
         const auto found = attributes.find(expected.name);
         if (found == attributes.end())
-            corrupt(path, "attribute '" + expected.name + "' is missing");
+            corruptFrame(path, "attribute '" + expected.name + "' is missing");
         if (found->second.type != expected.type)
-            corrupt(path, "attribute '" + expected.name + "' has type " +
-                              std::to_string(static_cast<int>(found->second.type)) + ", expected " +
-                              std::to_string(static_cast<int>(expected.type)));
+            corruptFrame(path, "attribute '" + expected.name + "' has type " +
+                                   std::to_string(static_cast<int>(found->second.type)) +
+                                   ", expected " + std::to_string(static_cast<int>(expected.type)));
     }
 }
 
@@ -325,19 +325,19 @@ void readChunks(const std::vector<Chunk>& chunks, FrameData& frame, const std::s
             readAttributeChunk(chunk, attributes, path);
         } else if (chunk.tag == kBodyTag) {
             if (++bodyChunks > 1)
-                corrupt(path, "more than one BODY chunk");
+                corruptFrame(path, "more than one BODY chunk");
             readBodyChunk(chunk, frame.state.bodies, path);
         } else if (chunk.tag == BubbleChunk::kTag) {
             if (++bubbleChunks > 1)
-                corrupt(path, "more than one BUBL chunk");
+                corruptFrame(path, "more than one BUBL chunk");
             BubbleChunk::read(chunk.data, chunk.size, path,
                               {frame.state.bubbles, frame.state.nextBubbleId,
                                frame.state.bubblesDeleted, frame.stats.bubbles});
         }
     }
     if (stateChunks != 1 || statsChunks != 1)
-        corrupt(path, "expected one STAT and one FSTA chunk, found " + std::to_string(stateChunks) +
-                          " and " + std::to_string(statsChunks));
+        corruptFrame(path, "expected one STAT and one FSTA chunk, found " +
+                               std::to_string(stateChunks) + " and " + std::to_string(statsChunks));
     checkAttributes(attributes, particleCount, path);
     fillParticles(frame.state.fluid, attributes, particleCount);
 }
@@ -387,8 +387,8 @@ FrameData decodeFrame(const std::vector<std::uint8_t>& bytes, const std::string&
     FrameData frame;
     readChunks(splitChunks(bytes, pathForMessages), frame, pathForMessages);
     if (frame.state.frame != header.frame)
-        corrupt(pathForMessages, "header says frame " + std::to_string(header.frame) +
-                                     ", data says frame " + std::to_string(frame.state.frame));
+        corruptFrame(pathForMessages, "header says frame " + std::to_string(header.frame) +
+                                          ", data says frame " + std::to_string(frame.state.frame));
     return frame;
 }
 

@@ -9,7 +9,7 @@ namespace airtrap {
 
 namespace {
 
-std::string header(std::size_t count, const std::vector<std::string>& comments) {
+std::string bubbleHeader(std::size_t count, const std::vector<std::string>& comments) {
     return plyHeader(count, comments,
                      {{"float", "x"},
                       {"float", "y"},
@@ -27,7 +27,7 @@ std::string header(std::size_t count, const std::vector<std::string>& comments) 
 std::vector<std::uint8_t> BubblePoints::encode(const std::vector<BubblePoint>& points,
                                                const std::vector<std::string>& comments,
                                                UpAxis up) {
-    const std::string head = header(points.size(), comments);
+    const std::string head = bubbleHeader(points.size(), comments);
     std::vector<std::uint8_t> bytes(head.size() + points.size() * kVertexBytes);
     std::memcpy(bytes.data(), head.data(), head.size());
     std::uint8_t* out = bytes.data() + head.size();

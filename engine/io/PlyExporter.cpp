@@ -10,7 +10,7 @@ namespace airtrap {
 
 namespace {
 
-std::string header(std::size_t count, const std::vector<std::string>& comments) {
+std::string particleHeader(std::size_t count, const std::vector<std::string>& comments) {
     return plyHeader(count, comments,
                      {{"float", "x"},
                       {"float", "y"},
@@ -31,7 +31,7 @@ void append(std::uint8_t*& out, const void* value, std::size_t size) {
 
 std::vector<std::uint8_t> PlyExporter::encode(const ParticleSet& particles,
                                               const std::vector<std::string>& comments, UpAxis up) {
-    const std::string head = header(particles.size(), comments);
+    const std::string head = particleHeader(particles.size(), comments);
     std::vector<std::uint8_t> bytes(head.size() + particles.size() * kVertexBytes);
     std::memcpy(bytes.data(), head.data(), head.size());
     std::uint8_t* out = bytes.data() + head.size();

@@ -12,7 +12,7 @@ namespace airtrap {
 
 namespace {
 
-constexpr const char* kFormatName = "airtrap-post";
+constexpr const char* kPostFormatName = "airtrap-post";
 
 std::string meshName(int frame) {
     return sequenceFileName("water", frame, "atm");
@@ -42,8 +42,8 @@ PostStore::PostStore(PostStore&& other) noexcept
 
 PostStore PostStore::open(const std::string& cacheDir) {
     const std::string dir = (std::filesystem::path(cacheDir) / kFolderName).string();
-    return PostStore(dir, ResultList<PostFrameEntry>::open(dir + "/" + kManifestName, kFormatName,
-                                                           kFormatVersion));
+    return PostStore(dir, ResultList<PostFrameEntry>::open(dir + "/" + kManifestName,
+                                                           kPostFormatName, kFormatVersion));
 }
 
 void PostStore::useSettings(const nlohmann::json& settings) {

@@ -13,7 +13,7 @@ namespace airtrap {
 
 namespace {
 
-constexpr const char* kFormatName = "airtrap-subgrid";
+constexpr const char* kSubgridFormatName = "airtrap-subgrid";
 
 std::string fileName(int frame) {
     return sequenceFileName("subgrid", frame, "atb");
@@ -38,8 +38,8 @@ SubgridStore::SubgridStore(std::string dir, ResultList<SubgridFrameEntry> result
 
 SubgridStore SubgridStore::open(const std::string& cacheDir) {
     const std::string dir = (std::filesystem::path(cacheDir) / PostStore::kFolderName).string();
-    return SubgridStore(dir, ResultList<SubgridFrameEntry>::open(dir + "/" + kManifestName,
-                                                                 kFormatName, kFormatVersion));
+    return SubgridStore(dir, ResultList<SubgridFrameEntry>::open(
+                                 dir + "/" + kManifestName, kSubgridFormatName, kFormatVersion));
 }
 
 std::uint32_t SubgridStore::chainCrc32(std::uint32_t previousChain, std::uint32_t frameCrc32) {

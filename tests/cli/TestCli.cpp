@@ -2,6 +2,7 @@
 // messages, the cache left behind, bit-identical resume, Ctrl-C and I/O failures (DESIGN §5, §8).
 #include "cache/FrameCache.h"
 #include "cli/CliTestSupport.h"
+#include "support/TestMain.h"
 
 #include <QRegularExpression>
 #include <QTemporaryDir>
@@ -574,5 +575,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestCli)
+AIRTRAP_TEST_GUILESS(TestCli)
 #include "TestCli.moc"

@@ -5,6 +5,7 @@
 #include "core/Error.h"
 #include "scene/SceneJson.h"
 #include "sim/Baker.h"
+#include "support/TestMain.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
@@ -123,5 +124,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestBakerEditedScene)
+AIRTRAP_TEST_APPLESS(TestBakerEditedScene)
 #include "TestBakerEditedScene.moc"

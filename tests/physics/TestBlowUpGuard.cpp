@@ -5,6 +5,7 @@
 #include "cache/FrameCache.h"
 #include "core/Error.h"
 #include "sim/Baker.h"
+#include "support/TestMain.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
@@ -95,5 +96,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestBlowUpGuard)
+AIRTRAP_TEST_APPLESS(TestBlowUpGuard)
 #include "TestBlowUpGuard.moc"

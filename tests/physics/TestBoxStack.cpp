@@ -3,6 +3,7 @@
 // impulses as the water's contacts. A little water sits in a far corner because a scene needs
 // some.
 #include "sim/Simulation.h"
+#include "support/TestMain.h"
 
 #include <QtTest>
 
@@ -56,5 +57,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestBoxStack)
+AIRTRAP_TEST_APPLESS(TestBoxStack)
 #include "TestBoxStack.moc"

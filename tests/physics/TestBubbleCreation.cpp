@@ -8,6 +8,7 @@
 #include "BubbleTestSupport.h"
 #include "core/Interrupter.h"
 #include "sph/WcsphSolver.h"
+#include "support/TestMain.h"
 
 #include <QtTest>
 
@@ -65,9 +66,8 @@ private Q_SLOTS:
         const double offset = (bubble.body.position - centre).norm();
         qInfo("bubble at %.4f %.4f %.4f (off by %.4f m, cell %.3f), radius %.4f (cavity %.3f), "
               "area fraction in water %.2f, pocket %.3g m³",
-              bubble.body.position.x(), bubble.body.position.y(), bubble.body.position.z(),
-              offset, cell, bubble.radius, radius, bubble.areaFractionInWater,
-              bubble.pocketVolume);
+              bubble.body.position.x(), bubble.body.position.y(), bubble.body.position.z(), offset,
+              cell, bubble.radius, radius, bubble.areaFractionInWater, bubble.pocketVolume);
         QVERIFY2(offset < cell, "bubble centre more than one cell from the cavity's");
         QVERIFY2(std::abs(bubble.radius / radius - 1.0) < 0.2, "radius off by more than 20 %");
         QCOMPARE(bubble.birthFrame, 2);
@@ -108,11 +108,10 @@ private Q_SLOTS:
     void perFrameLimitAndSeededChoice() {
         Scene scene = stillTank();
         scene.bubbles.maxNewPerFrame = 2;
-        const std::vector<std::pair<Vec3d, double>> cavities = {
-            {Vec3d(0.15, 0.2, 0.15), 0.08},
-            {Vec3d(0.45, 0.2, 0.15), 0.08},
-            {Vec3d(0.15, 0.2, 0.45), 0.08},
-            {Vec3d(0.45, 0.2, 0.45), 0.08}};
+        const std::vector<std::pair<Vec3d, double>> cavities = {{Vec3d(0.15, 0.2, 0.15), 0.08},
+                                                                {Vec3d(0.45, 0.2, 0.15), 0.08},
+                                                                {Vec3d(0.15, 0.2, 0.45), 0.08},
+                                                                {Vec3d(0.45, 0.2, 0.45), 0.08}};
         const auto chosen = [&](std::uint64_t seed) {
             scene.seed = seed;
             auto simulation = withCavities(scene, cavities);
@@ -132,5 +131,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestBubbleCreation)
+AIRTRAP_TEST_APPLESS(TestBubbleCreation)
 #include "TestBubbleCreation.moc"

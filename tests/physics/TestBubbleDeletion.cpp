@@ -7,6 +7,7 @@
 #include "BubbleTestSupport.h"
 #include "core/Interrupter.h"
 #include "sph/WcsphSolver.h"
+#include "support/TestMain.h"
 
 #include <QtTest>
 
@@ -61,9 +62,8 @@ private Q_SLOTS:
         scene.bubbles.maxAge = 0.1;
         auto simulation =
             test::simulationWithBubbles(scene, {test::bubbleAt(0, Vec3d(0.2, 0.15, 0.2), 0.04)});
-        const double at = runUntil(*simulation, 0.5, [](const Simulation& s) {
-            return s.state().bubbles.empty();
-        });
+        const double at = runUntil(*simulation, 0.5,
+                                   [](const Simulation& s) { return s.state().bubbles.empty(); });
         QVERIFY2(at > 0.1 && at <= 0.1 + 1.0 / 50.0 + 1e-9, qPrintable(QString::number(at)));
         QCOMPARE(deletedBy(*simulation, BubbleTally::Age), std::uint64_t(1));
         QCOMPARE(simulation->state().bubblesDeleted.deletedTotal(), std::uint64_t(1));
@@ -137,5 +137,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestBubbleDeletion)
+AIRTRAP_TEST_APPLESS(TestBubbleDeletion)
 #include "TestBubbleDeletion.moc"

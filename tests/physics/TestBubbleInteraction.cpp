@@ -9,6 +9,7 @@
 //  - ε = 0: the approach stops at contact (no overlap beyond a step's travel).
 #include "BubbleTestSupport.h"
 #include "sph/WcsphSolver.h"
+#include "support/TestMain.h"
 
 #include <QtTest>
 
@@ -109,5 +110,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestBubbleInteraction)
+AIRTRAP_TEST_APPLESS(TestBubbleInteraction)
 #include "TestBubbleInteraction.moc"

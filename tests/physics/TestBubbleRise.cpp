@@ -3,6 +3,7 @@
 // min(2/9 g R²/ν, cap).
 #include "BubbleTestSupport.h"
 #include "sph/WcsphSolver.h"
+#include "support/TestMain.h"
 
 #include <QtTest>
 
@@ -10,7 +11,7 @@ using namespace airtrap;
 
 namespace {
 
-Scene stillTank() {
+Scene tallStillTank() {
     Scene scene;
     scene.solver.particleSpacing = 0.02;
     scene.solver.maxSpeed = 1.5;
@@ -31,11 +32,11 @@ class TestBubbleRise : public QObject {
 
 private Q_SLOTS:
     void risesAtCappedStokesSpeed() {
-        Scene scene = stillTank();
+        Scene scene = tallStillTank();
         scene.bubbles.maxRiseSpeed = 0.25;
         const double radius = 0.04;
-        auto simulation = test::simulationWithBubbles(
-            scene, {test::bubbleAt(0, Vec3d(0.2, 0.2, 0.2), radius)});
+        auto simulation =
+            test::simulationWithBubbles(scene, {test::bubbleAt(0, Vec3d(0.2, 0.2, 0.2), radius)});
         const double target = 0.25; // 2/9 g R²/ν = 3490 m/s for R = 4 cm: the cap holds
 
         double startHeight = 0.0;
@@ -61,5 +62,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestBubbleRise)
+AIRTRAP_TEST_APPLESS(TestBubbleRise)
 #include "TestBubbleRise.moc"

@@ -6,6 +6,7 @@
 #include "scene/SceneJson.h"
 #include "sim/SceneSetup.h"
 #include "sim/Simulation.h"
+#include "support/TestMain.h"
 
 #include <QtTest>
 
@@ -61,8 +62,8 @@ private Q_SLOTS:
         const RigidBodyState& cylinder = end_[2];
         const RigidBodySettings& shape = scene_.bodies[2];
         const double axisUp = std::abs((cylinder.orientation * Vec3d::UnitY()).y());
-        const double halfExtent = axisUp * 0.5 * shape.height +
-                                  std::sqrt(1.0 - axisUp * axisUp) * shape.radius;
+        const double halfExtent =
+            axisUp * 0.5 * shape.height + std::sqrt(1.0 - axisUp * axisUp) * shape.radius;
         QVERIFY2(cylinder.position.y() > surface,
                  qPrintable(QString("cylinder centre %1 m below the surface %2 m")
                                 .arg(cylinder.position.y())
@@ -96,5 +97,5 @@ private:
     std::vector<RigidBodyState> end_;
 };
 
-QTEST_APPLESS_MAIN(TestBuoyancy)
+AIRTRAP_TEST_APPLESS(TestBuoyancy)
 #include "TestBuoyancy.moc"

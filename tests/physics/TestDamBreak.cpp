@@ -3,6 +3,7 @@
 // Martin & Moyce (1952) and Koshizuka & Oka (1996), as digitised in PySPH's db_exp_data.py
 // (../shared/data/dambreak_*.csv; the figures used are copied below).
 #include "sim/Simulation.h"
+#include "support/TestMain.h"
 
 #include <QtTest>
 #include <algorithm>
@@ -139,5 +140,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestDamBreak)
+AIRTRAP_TEST_APPLESS(TestDamBreak)
 #include "TestDamBreak.moc"

@@ -5,6 +5,7 @@
 #include "core/ThreadLimit.h"
 #include "scene/SceneJson.h"
 #include "sim/Simulation.h"
+#include "support/TestMain.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
@@ -127,8 +128,7 @@ private Q_SLOTS:
         auto straight = test::simulationWithBubbles(scene, twoBubbles());
         const SimulationState uninterrupted = bakeFrom(*straight, scene.frames.endFrame);
         QVERIFY(one == uninterrupted);
-        QVERIFY2(uninterrupted.bubblesDeleted.deletedTotal() > 0 ||
-                     uninterrupted.nextBubbleId > 2,
+        QVERIFY2(uninterrupted.bubblesDeleted.deletedTotal() > 0 || uninterrupted.nextBubbleId > 2,
                  "no bubble came or went: the bubbles' bookkeeping went untested");
 
         QTemporaryDir dir;
@@ -146,5 +146,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestDeterminism)
+AIRTRAP_TEST_APPLESS(TestDeterminism)
 #include "TestDeterminism.moc"

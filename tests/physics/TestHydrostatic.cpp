@@ -2,6 +2,7 @@
 // leaves, the particle count stays constant and the water is at rest.
 #include "sim/Simulation.h"
 #include "sph/WcsphSolver.h"
+#include "support/TestMain.h"
 
 #include <QtTest>
 #include <algorithm>
@@ -12,14 +13,14 @@ using namespace airtrap;
 
 namespace {
 
-constexpr double kSpacing = 0.02; // m
+constexpr double kTankSpacing = 0.02; // m
 constexpr double kDepth = 0.4;    // m of water
 constexpr double kSettleSeconds = 1.0;
 
 Scene tank() {
     Scene scene;
     scene.name = "hydrostatic test";
-    scene.solver.particleSpacing = kSpacing;
+    scene.solver.particleSpacing = kTankSpacing;
     scene.solver.maxSpeed = 3.0; // c = 30 m/s: still 10× the speed of any wave in 0.4 m
     scene.frames.fps = 10.0;
     scene.frames.endFrame = 1 + int(kSettleSeconds * scene.frames.fps);
@@ -62,10 +63,10 @@ private Q_SLOTS:
 
         float surface = 0.0f;
         for (const Vec3f& x : fluid.positions) {
-            QVERIFY(x.y() > -0.5 * kSpacing && x.x() > -0.5 * kSpacing && x.z() > -0.5 * kSpacing);
+            QVERIFY(x.y() > -0.5 * kTankSpacing && x.x() > -0.5 * kTankSpacing && x.z() > -0.5 * kTankSpacing);
             surface = std::max(surface, x.y());
         }
-        surface += 0.5f * float(kSpacing);
+        surface += 0.5f * float(kTankSpacing);
 
         // Mean pressure per layer, away from the side walls, from the equation of state.
         std::map<int, std::pair<double, int>> layers;
@@ -73,15 +74,15 @@ private Q_SLOTS:
             const Vec3f& x = fluid.positions[i];
             if (x.x() < 0.1f || x.x() > 0.3f || x.z() < 0.1f || x.z() > 0.3f)
                 continue;
-            const int layer = int(std::floor((surface - x.y()) / kSpacing));
+            const int layer = int(std::floor((surface - x.y()) / kTankSpacing));
             layers[layer].first += simulation.solver().pressure(fluid.densities[i]);
             layers[layer].second += 1;
         }
         const double rhoG = 1000.0 * 9.81;
         int checked = 0;
         for (const auto& [layer, sum] : layers) {
-            const double depth = (layer + 0.5) * kSpacing;
-            if (depth < 0.1 || depth > kDepth - kSpacing)
+            const double depth = (layer + 0.5) * kTankSpacing;
+            if (depth < 0.1 || depth > kDepth - kTankSpacing)
                 continue; // the top layers sit in the kernel's truncated support
             const double measured = sum.first / sum.second;
             const double expected = rhoG * depth;
@@ -98,5 +99,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestHydrostatic)
+AIRTRAP_TEST_APPLESS(TestHydrostatic)
 #include "TestHydrostatic.moc"

@@ -6,6 +6,7 @@
 #include "scene/SceneValidator.h"
 #include "sim/InflowEmitter.h"
 #include "sim/Simulation.h"
+#include "support/TestMain.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
@@ -16,7 +17,7 @@ using namespace airtrap;
 
 namespace {
 
-constexpr double kSpacing = 0.01;
+constexpr double kEmitterSpacing = 0.01;
 
 InflowEmitterSettings disc(double radius) {
     InflowEmitterSettings settings;
@@ -76,9 +77,9 @@ class TestInflowEmitter : public QObject {
 private Q_SLOTS:
     void keepsItsBudgetAndTimeWindow() {
         InflowEmitterSettings settings = disc(0.03);
-        const std::size_t perLayer = InflowEmitter(settings, kSpacing, 1000.0).particlesPerLayer();
+        const std::size_t perLayer = InflowEmitter(settings, kEmitterSpacing, 1000.0).particlesPerLayer();
         settings.maxParticles = int(3 * perLayer);
-        const InflowEmitter emitter(settings, kSpacing, 1000.0);
+        const InflowEmitter emitter(settings, kEmitterSpacing, 1000.0);
         QCOMPARE(emitter.layerBudget(), std::size_t(3));
 
         SimulationState state;
@@ -92,15 +93,15 @@ private Q_SLOTS:
 
         // A budget that ends inside a layer stops at the last whole layer.
         settings.maxParticles += int(perLayer) - 1;
-        QCOMPARE(InflowEmitter(settings, kSpacing, 1000.0).layerBudget(), std::size_t(3));
+        QCOMPARE(InflowEmitter(settings, kEmitterSpacing, 1000.0).layerBudget(), std::size_t(3));
 
         // With budget to spare, layers leave every Δx/speed from start until stop, not after.
         settings.maxParticles = 1000000;
-        const InflowEmitter unlimited(settings, kSpacing, 1000.0);
+        const InflowEmitter unlimited(settings, kEmitterSpacing, 1000.0);
         SimulationState all;
         emitInSteps(unlimited, 0.0, 2.0, 7e-4, all);
         const auto layers = std::size_t(
-            std::ceil((settings.stopTime - settings.startTime) * settings.speed / kSpacing - 1e-9));
+            std::ceil((settings.stopTime - settings.startTime) * settings.speed / kEmitterSpacing - 1e-9));
         QCOMPARE(all.fluid.size(), layers * perLayer);
         QCOMPARE(unlimited.emit(settings.stopTime, 5.0, all), std::size_t(0));
         QCOMPARE(unlimited.layersBefore(settings.startTime), std::size_t(0));
@@ -109,9 +110,9 @@ private Q_SLOTS:
     void emitsEvenlySpacedLayers() {
         InflowEmitterSettings settings = disc(0.05);
         settings.direction = Vec3d(1.0, -2.0, 0.5); // oblique: the nozzle frame must be square
-        const InflowEmitter emitter(settings, kSpacing, 1000.0);
+        const InflowEmitter emitter(settings, kEmitterSpacing, 1000.0);
         const double area = std::numbers::pi * settings.radius * settings.radius;
-        const double expected = area / (kSpacing * kSpacing);
+        const double expected = area / (kEmitterSpacing * kEmitterSpacing);
         QVERIFY2(std::abs(double(emitter.particlesPerLayer()) / expected - 1.0) < 0.1,
                  qPrintable(QString("%1 particles per layer, expected about %2")
                                 .arg(emitter.particlesPerLayer())
@@ -119,7 +120,7 @@ private Q_SLOTS:
 
         // One emission over several layers' time: the layers are where the jet has taken them.
         SimulationState state;
-        emitter.emit(0.0, settings.startTime + 4.5 * kSpacing / settings.speed, state);
+        emitter.emit(0.0, settings.startTime + 4.5 * kEmitterSpacing / settings.speed, state);
         const ParticleSet& fluid = state.fluid;
         QCOMPARE(fluid.size(), 5 * emitter.particlesPerLayer());
         const Vec3d d = emitter.direction();
@@ -130,12 +131,12 @@ private Q_SLOTS:
                     nearest =
                         std::min(nearest, double((fluid.positions[i] - fluid.positions[j]).norm()));
             QVERIFY2(
-                std::abs(nearest / kSpacing - 1.0) < 0.01,
+                std::abs(nearest / kEmitterSpacing - 1.0) < 0.01,
                 qPrintable(QString("particle %1: nearest neighbour at %2 m").arg(i).arg(nearest)));
             // Layer k sits (4.5 − k)·Δx beyond the nozzle plane, every particle moving at speed.
             const std::size_t layer = i / emitter.particlesPerLayer();
             const double along = (fluid.positions[i].cast<double>() - settings.position).dot(d);
-            QVERIFY(std::abs(along - (4.5 - double(layer)) * kSpacing) < 1e-3 * kSpacing);
+            QVERIFY(std::abs(along - (4.5 - double(layer)) * kEmitterSpacing) < 1e-3 * kEmitterSpacing);
             QVERIFY((fluid.velocities[i].cast<double>() - settings.speed * d).norm() < 1e-5);
             QCOMPARE(fluid.densities[i], 1000.0f);
         }
@@ -147,7 +148,7 @@ private Q_SLOTS:
         settings.direction = Vec3d(1.0, 0.0, 0.0);
         settings.width = 0.08;
         settings.height = 0.05;
-        const InflowEmitter emitter(settings, kSpacing, 1000.0);
+        const InflowEmitter emitter(settings, kEmitterSpacing, 1000.0);
         QCOMPARE(emitter.particlesPerLayer(), std::size_t(8 * 5));
         // A horizontal jet along x: the width is horizontal (z), the height vertical (y).
         QVERIFY(std::abs(emitter.widthAxis().z()) > 0.999);
@@ -262,5 +263,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestInflowEmitter)
+AIRTRAP_TEST_APPLESS(TestInflowEmitter)
 #include "TestInflowEmitter.moc"

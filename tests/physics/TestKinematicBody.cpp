@@ -3,6 +3,7 @@
 #include "rigid/EulerRotation.h"
 #include "rigid/KeyframedPath.h"
 #include "sim/Simulation.h"
+#include "support/TestMain.h"
 
 #include <QtTest>
 
@@ -60,5 +61,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestKinematicBody)
+AIRTRAP_TEST_APPLESS(TestKinematicBody)
 #include "TestKinematicBody.moc"

@@ -4,6 +4,7 @@
 // sphere's momentum loss and the water's gain agree within a few per cent.
 #include "sim/Simulation.h"
 #include "sph/WcsphSolver.h"
+#include "support/TestMain.h"
 
 #include <QtTest>
 
@@ -72,5 +73,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestMomentumExchange)
+AIRTRAP_TEST_APPLESS(TestMomentumExchange)
 #include "TestMomentumExchange.moc"

@@ -1,6 +1,7 @@
 // A static box obstacle in the path of a collapsing column: the water flows around and over it
 // and never enters it, and none is lost.
 #include "sim/Simulation.h"
+#include "support/TestMain.h"
 
 #include <QtTest>
 
@@ -49,5 +50,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestObstacle)
+AIRTRAP_TEST_APPLESS(TestObstacle)
 #include "TestObstacle.moc"

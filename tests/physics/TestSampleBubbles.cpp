@@ -8,6 +8,7 @@
 #include "scene/SceneJson.h"
 #include "sim/Simulation.h"
 #include "sph/WcsphSolver.h"
+#include "support/TestMain.h"
 
 #include <QtTest>
 #include <map>
@@ -92,5 +93,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestSampleBubbles)
+AIRTRAP_TEST_APPLESS(TestSampleBubbles)
 #include "TestSampleBubbles.moc"

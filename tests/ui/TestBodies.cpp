@@ -8,6 +8,7 @@
 #include "panels/SceneTreePanel.h"
 #include "scene/SceneJson.h"
 #include "sim/BodyBuilder.h"
+#include "support/WidgetTestMain.h"
 #include "viewport/ViewportWidget.h"
 #include "window/EditorActions.h"
 #include "window/LogPanel.h"
@@ -222,5 +223,5 @@ private Q_SLOTS:
 
 } // namespace airtrap
 
-QTEST_MAIN(airtrap::TestBodies)
+AIRTRAP_TEST_WIDGETS(airtrap::TestBodies)
 #include "TestBodies.moc"

@@ -8,6 +8,7 @@
 #include "model/SceneTreeModel.h"
 #include "panels/SceneTreePanel.h"
 #include "scene/SceneJson.h"
+#include "support/WidgetTestMain.h"
 #include "timeline/FrameLoader.h"
 #include "timeline/TimelineWidget.h"
 #include "window/EditorActions.h"
@@ -195,9 +196,9 @@ private Q_SLOTS:
         const RigidBodyState first = cache.readFrame(1).state.bodies.at(0);
         const RigidBodyState last = cache.readFrame(3).state.bodies.at(0);
         // Thrown down at 1 m/s under gravity: about 8 cm lower after 2/30 s.
-        QVERIFY2(first.position.y() - last.position.y() > 0.05,
-                 qPrintable(QString("the bunny fell %1 m").arg(first.position.y() -
-                                                               last.position.y())));
+        QVERIFY2(
+            first.position.y() - last.position.y() > 0.05,
+            qPrintable(QString("the bunny fell %1 m").arg(first.position.y() - last.position.y())));
     }
 
     void anEngineErrorIsShownWithTheEnginesMessage() {
@@ -256,5 +257,5 @@ private Q_SLOTS:
 
 } // namespace airtrap
 
-QTEST_MAIN(airtrap::TestEditor)
+AIRTRAP_TEST_WIDGETS(airtrap::TestEditor)
 #include "TestEditor.moc"

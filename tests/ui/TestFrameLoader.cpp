@@ -1,6 +1,7 @@
 // The timeline's frame loader: reads frames off the GUI thread, keeps recent ones in a small
 // LRU, answers only the newest request, and reports damaged or vanished frames by name.
 #include "BakeTestScenes.h"
+#include "support/WidgetTestMain.h"
 #include "timeline/FrameLoader.h"
 #include "timeline/FrameLru.h"
 #include "timeline/LoadRequests.h"
@@ -243,5 +244,5 @@ private:
 
 } // namespace airtrap
 
-QTEST_MAIN(airtrap::TestFrameLoader)
+AIRTRAP_TEST_WIDGETS(airtrap::TestFrameLoader)
 #include "TestFrameLoader.moc"

@@ -1,6 +1,7 @@
 // The editor's main window comes up with its menus and a working OpenGL 3.3 core viewport.
 // Runs under a real (virtual) X server: QOpenGLWidget crashes on the offscreen platform.
 #include "document/SceneDocument.h"
+#include "support/WidgetTestMain.h"
 #include "viewport/ViewportWidget.h"
 #include "window/EditorActions.h"
 #include "window/MainWindow.h"
@@ -145,5 +146,5 @@ private Q_SLOTS:
 
 } // namespace airtrap
 
-QTEST_MAIN(airtrap::TestMainWindow)
+AIRTRAP_TEST_WIDGETS(airtrap::TestMainWindow)
 #include "TestMainWindow.moc"

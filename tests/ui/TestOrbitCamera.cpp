@@ -1,4 +1,5 @@
 // The viewport's turntable camera: fitting, picking rays and navigation, without any window.
+#include "support/TestMain.h"
 #include "viewport/OrbitCamera.h"
 
 #include <QTest>
@@ -181,5 +182,5 @@ private Q_SLOTS:
 
 } // namespace airtrap
 
-QTEST_GUILESS_MAIN(airtrap::TestOrbitCamera)
+AIRTRAP_TEST_GUILESS(airtrap::TestOrbitCamera)
 #include "TestOrbitCamera.moc"

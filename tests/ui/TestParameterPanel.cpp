@@ -14,6 +14,7 @@
 #include "panels/Vector3Editor.h"
 #include "scene/ParameterCodec.h"
 #include "scene/SceneSchema.h"
+#include "support/WidgetTestMain.h"
 
 #include <QAction>
 #include <QCheckBox>
@@ -398,5 +399,5 @@ private Q_SLOTS:
 
 } // namespace airtrap
 
-QTEST_MAIN(airtrap::TestParameterPanel)
+AIRTRAP_TEST_WIDGETS(airtrap::TestParameterPanel)
 #include "TestParameterPanel.moc"

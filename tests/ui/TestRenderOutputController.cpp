@@ -4,6 +4,7 @@
 #include "BakeTestScenes.h"
 #include "controller/RenderOutputController.h"
 #include "post/PostStore.h"
+#include "support/WidgetTestMain.h"
 
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -102,5 +103,5 @@ private Q_SLOTS:
 
 } // namespace airtrap
 
-QTEST_MAIN(airtrap::TestRenderOutputController)
+AIRTRAP_TEST_WIDGETS(airtrap::TestRenderOutputController)
 #include "TestRenderOutputController.moc"

@@ -6,6 +6,7 @@
 #include "controller/RenderOutputController.h"
 #include "controller/SimulationController.h"
 #include "post/PostStore.h"
+#include "support/WidgetTestMain.h"
 #include "viewport/ViewportWidget.h"
 #include "window/EditorActions.h"
 #include "window/ExportDialog.h"
@@ -105,5 +106,5 @@ private Q_SLOTS:
 
 } // namespace airtrap
 
-QTEST_MAIN(airtrap::TestRenderSession)
+AIRTRAP_TEST_WIDGETS(airtrap::TestRenderSession)
 #include "TestRenderSession.moc"

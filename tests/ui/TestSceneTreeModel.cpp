@@ -3,6 +3,7 @@
 #include "document/SceneDocument.h"
 #include "model/SceneTreeModel.h"
 #include "scene/SceneSchema.h"
+#include "support/WidgetTestMain.h"
 
 #include <QAbstractItemModelTester>
 #include <QSignalSpy>
@@ -148,5 +149,5 @@ private Q_SLOTS:
 
 } // namespace airtrap
 
-QTEST_MAIN(airtrap::TestSceneTreeModel)
+AIRTRAP_TEST_WIDGETS(airtrap::TestSceneTreeModel)
 #include "TestSceneTreeModel.moc"

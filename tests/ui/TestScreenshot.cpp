@@ -1,6 +1,7 @@
 // `airtrap --screenshot`: the real editor binary renders a cached dam-break frame to a PNG and
 // exits; the picture shows water where the water is, and bad requests fail with a reason.
 #include "BakeTestScenes.h"
+#include "support/TestMain.h"
 
 #include <QImage>
 #include <QProcess>
@@ -124,5 +125,5 @@ private Q_SLOTS:
 
 } // namespace airtrap
 
-QTEST_GUILESS_MAIN(airtrap::TestScreenshot)
+AIRTRAP_TEST_GUILESS(airtrap::TestScreenshot)
 #include "TestScreenshot.moc"

@@ -2,6 +2,7 @@
 // within a step, pauses without losing anything, and reports engine errors as failed().
 #include "BakeTestScenes.h"
 #include "controller/SimulationController.h"
+#include "support/WidgetTestMain.h"
 #include "timeline/TimelineWidget.h"
 
 #include <QElapsedTimer>
@@ -291,5 +292,5 @@ private:
 
 } // namespace airtrap
 
-QTEST_MAIN(airtrap::TestSimulationController)
+AIRTRAP_TEST_WIDGETS(airtrap::TestSimulationController)
 #include "TestSimulationController.moc"

@@ -2,6 +2,7 @@
 // alive bubbles, those created so far and those deleted per rule, and stays out of the way for
 // scenes that never had a bubble and in edit mode.
 #include "cache/FrameFile.h"
+#include "support/WidgetTestMain.h"
 #include "window/StatusBarFields.h"
 
 #include <QLabel>
@@ -84,5 +85,5 @@ private Q_SLOTS:
 
 } // namespace airtrap
 
-QTEST_MAIN(airtrap::TestStatusBarFields)
+AIRTRAP_TEST_WIDGETS(airtrap::TestStatusBarFields)
 #include "TestStatusBarFields.moc"

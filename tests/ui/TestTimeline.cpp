@@ -1,5 +1,6 @@
 // The timeline: range and clamping, stepping, the buttons, spin box and ruler, and playback at
 // the scene's rate over cached frames only.
+#include "support/WidgetTestMain.h"
 #include "timeline/FrameRuler.h"
 #include "timeline/TimelineWidget.h"
 
@@ -194,5 +195,5 @@ private Q_SLOTS:
 
 } // namespace airtrap
 
-QTEST_MAIN(airtrap::TestTimeline)
+AIRTRAP_TEST_WIDGETS(airtrap::TestTimeline)
 #include "TestTimeline.moc"

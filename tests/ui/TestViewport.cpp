@@ -3,6 +3,7 @@
 // server: QOpenGLWidget crashes on the offscreen platform.
 #include "scene/SceneJson.h"
 #include "sim/Simulation.h"
+#include "support/WidgetTestMain.h"
 #include "viewport/BodyDrawable.h"
 #include "viewport/BoxGizmoDrawable.h"
 #include "viewport/BubbleDrawable.h"
@@ -630,5 +631,5 @@ private Q_SLOTS:
 
 } // namespace airtrap
 
-QTEST_MAIN(airtrap::TestViewport)
+AIRTRAP_TEST_WIDGETS(airtrap::TestViewport)
 #include "TestViewport.moc"

@@ -8,6 +8,7 @@
 #include <QtTest>
 #include <fstream>
 #include <functional>
+#include <sstream>
 #include <string>
 
 namespace airtrap::test {
@@ -31,6 +32,14 @@ inline std::string writeFile(const QTemporaryDir& folder, const std::string& nam
     const std::string path = folder.path().toStdString() + "/" + name;
     std::ofstream(path, std::ios::binary) << text;
     return path;
+}
+
+//! The whole of the file at `path` (empty when it cannot be read).
+inline std::string readText(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
 }
 
 //! True when `text` contains `part`; for QVERIFY2 with the text as the failure message.

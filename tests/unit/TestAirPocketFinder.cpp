@@ -2,6 +2,7 @@
 // the right place and size; a cavity open to the air (upwards or sideways), or one inside a
 // solid, is none.
 #include "bubbles/AirPocketFinder.h"
+#include "support/TestMain.h"
 
 #include <QtTest>
 #include <cmath>
@@ -108,5 +109,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestAirPocketFinder)
+AIRTRAP_TEST_APPLESS(TestAirPocketFinder)
 #include "TestAirPocketFinder.moc"

@@ -2,6 +2,7 @@
 // checks rest on them): exact values at chosen points, and normals that agree with the distance's
 // gradient everywhere.
 #include "rigid/BodyShape.h"
+#include "support/TestMain.h"
 
 #include <QtTest>
 #include <random>
@@ -80,5 +81,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestBodyShape)
+AIRTRAP_TEST_APPLESS(TestBodyShape)
 #include "TestBodyShape.moc"

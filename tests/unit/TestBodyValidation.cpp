@@ -2,6 +2,7 @@
 // the value and what was expected; bodies overlapping the water, an obstacle or each other at
 // t = 0 are warned about before a bake.
 #include "scene/SceneValidator.h"
+#include "support/TestMain.h"
 #include "unit/SceneTestSupport.h"
 
 #include <QTemporaryDir>
@@ -167,5 +168,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestBodyValidation)
+AIRTRAP_TEST_APPLESS(TestBodyValidation)
 #include "TestBodyValidation.moc"

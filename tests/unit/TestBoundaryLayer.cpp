@@ -3,6 +3,7 @@
 #include "rigid/RigidBody.h"
 #include "rigid/ShapeSampler.h"
 #include "sph/BoundaryLayer.h"
+#include "support/TestMain.h"
 
 #include <QtTest>
 #include <random>
@@ -11,12 +12,12 @@ using namespace airtrap;
 
 namespace {
 
-constexpr double kSpacing = 0.02;
+constexpr double kLayerSpacing = 0.02;
 constexpr float kSupport = 0.04f;
 const Aabb kGridDomain{Vec3d(-0.04, -0.04, -0.04), Vec3d(1.04, 1.04, 0.54)};
 
 RigidBody sphereAt(const Vec3d& centre, double radius) {
-    return RigidBody("sphere", ShapeSampler::sampleSphere(radius, kSpacing),
+    return RigidBody("sphere", ShapeSampler::sampleSphere(radius, kLayerSpacing),
                      BodyShape::sphere(radius), RigidPose{centre, Quatd::Identity()});
 }
 
@@ -74,5 +75,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestBoundaryLayer)
+AIRTRAP_TEST_APPLESS(TestBoundaryLayer)
 #include "TestBoundaryLayer.moc"

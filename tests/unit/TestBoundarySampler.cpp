@@ -1,6 +1,7 @@
 // Boundary particles: one layer on the box faces, unit normals on the water's side, an open top
 // left out, and volumes that make a flat wall at the water's spacing stand for Δx³ each.
 #include "rigid/BoundarySampler.h"
+#include "support/TestMain.h"
 
 #include <QtTest>
 #include <cmath>
@@ -68,5 +69,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestBoundarySampler)
+AIRTRAP_TEST_APPLESS(TestBoundarySampler)
 #include "TestBoundarySampler.moc"

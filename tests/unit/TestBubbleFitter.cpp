@@ -3,6 +3,7 @@
 // small for the minimum radius makes no bubble.
 #include "bubbles/AirPocketFinder.h"
 #include "bubbles/BubbleFitter.h"
+#include "support/TestMain.h"
 
 #include <QtTest>
 #include <cmath>
@@ -11,11 +12,11 @@ using namespace airtrap;
 
 namespace {
 
-constexpr double kSpacing = 0.02;
-const Aabb kDomain{Vec3d(0.0, 0.0, 0.0), Vec3d(0.8, 0.8, 0.8)};
+constexpr double kFitterSpacing = 0.02;
+const Aabb kFitterDomain{Vec3d(0.0, 0.0, 0.0), Vec3d(0.8, 0.8, 0.8)};
 
 struct Pool {
-    NeighborGrid grid{kDomain, 2.0f * float(kSpacing)};
+    NeighborGrid grid{kFitterDomain, 2.0f * float(kFitterSpacing)};
     PositionArrays sorted;
 };
 
@@ -25,7 +26,7 @@ void fill(Pool& pool, const Vec3d& centre, double radius) {
     for (int k = 0; k < 40; ++k)
         for (int j = 0; j < 30; ++j)
             for (int i = 0; i < 40; ++i) {
-                const Vec3d x = (Vec3d(i, j, k) + Vec3d::Constant(0.5)) * kSpacing;
+                const Vec3d x = (Vec3d(i, j, k) + Vec3d::Constant(0.5)) * kFitterSpacing;
                 if ((x - centre).norm() >= radius)
                     points.push_back(x.cast<float>());
             }
@@ -60,15 +61,15 @@ private Q_SLOTS:
         AirPocketFinder finder;
         const auto pockets = finder.find(pool.grid, [](const Vec3d&) { return false; });
         QCOMPARE(pockets.size(), std::size_t(1));
-        const BubbleFitter fitter(kSpacing, 0.02);
+        const BubbleFitter fitter(kFitterSpacing, 0.02);
         const std::optional<FittedBubble> bubble = fitter.fit(pockets[0], pool.grid, pool.sorted);
         QVERIFY(bubble.has_value());
         qInfo("bubble radius %.4f m in a %.2f m cavity, area fraction in water %.2f",
               bubble->radius, radius, bubble->areaFractionInWater);
-        QVERIFY((bubble->centre - centre).norm() < 2.0 * kSpacing);
+        QVERIFY((bubble->centre - centre).norm() < 2.0 * kFitterSpacing);
         QVERIFY(std::abs(bubble->radius - radius) < 0.2 * radius);
         // Its surface keeps half a spacing from every particle.
-        QVERIFY(nearestDistance(pool, bubble->centre) >= bubble->radius + 0.5 * kSpacing - 1e-6);
+        QVERIFY(nearestDistance(pool, bubble->centre) >= bubble->radius + 0.5 * kFitterSpacing - 1e-6);
         QCOMPARE(bubble->pocketVolume, pockets[0].volume);
 
         // The pocket's whole cells fall short of the cavity, so this bubble floats in a gap of
@@ -76,7 +77,7 @@ private Q_SLOTS:
         // gives a bubble flush with the water, most of its surface wet. The sub-grid stage
         // fills the gap of the first with small bubbles (paper §4.2).
         AirPocket snug = pockets[0];
-        snug.volume = 4.0 / 3.0 * M_PI * std::pow(radius - 0.5 * kSpacing, 3);
+        snug.volume = 4.0 / 3.0 * M_PI * std::pow(radius - 0.5 * kFitterSpacing, 3);
         const std::optional<FittedBubble> flush = fitter.fit(snug, pool.grid, pool.sorted);
         QVERIFY(flush.has_value());
         qInfo("flush bubble radius %.4f m, area fraction in water %.2f", flush->radius,
@@ -90,10 +91,10 @@ private Q_SLOTS:
         fill(pool, Vec3d(0.41, 0.3, 0.39), 0.1);
         AirPocketFinder finder;
         const auto pockets = finder.find(pool.grid, [](const Vec3d&) { return false; });
-        const BubbleFitter fitter(kSpacing, 0.09);
+        const BubbleFitter fitter(kFitterSpacing, 0.09);
         QVERIFY(!fitter.fit(pockets.at(0), pool.grid, pool.sorted).has_value());
     }
 };
 
-QTEST_APPLESS_MAIN(TestBubbleFitter)
+AIRTRAP_TEST_APPLESS(TestBubbleFitter)
 #include "TestBubbleFitter.moc"

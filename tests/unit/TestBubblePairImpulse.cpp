@@ -4,6 +4,7 @@
 #include "bubbles/BubblePairImpulse.h"
 #include "core/Error.h"
 #include "rigid/MassProperties.h"
+#include "support/TestMain.h"
 
 #include <QtTest>
 
@@ -82,5 +83,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestBubblePairImpulse)
+AIRTRAP_TEST_APPLESS(TestBubblePairImpulse)
 #include "TestBubblePairImpulse.moc"

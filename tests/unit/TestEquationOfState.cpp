@@ -1,6 +1,7 @@
 // Tait equation of state (paper eq. 3): p = B((ρ/ρ₀)^7 − 1), B = ρ₀c²/7, c = 10·u_max, with the
 // negative branch clamped to zero.
 #include "sph/WcsphSolver.h"
+#include "support/TestMain.h"
 
 #include <QtTest>
 #include <cmath>
@@ -40,5 +41,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestEquationOfState)
+AIRTRAP_TEST_APPLESS(TestEquationOfState)
 #include "TestEquationOfState.moc"

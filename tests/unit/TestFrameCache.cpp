@@ -2,6 +2,7 @@
 // helpers, refusing to clobber, and I/O failures that leave the cache consistent.
 #include "cache/FrameCache.h"
 #include "core/AtomicFile.h"
+#include "support/TestMain.h"
 #include "unit/CacheTestData.h"
 
 #include <QTemporaryDir>
@@ -396,5 +397,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestFrameCache)
+AIRTRAP_TEST_APPLESS(TestFrameCache)
 #include "TestFrameCache.moc"

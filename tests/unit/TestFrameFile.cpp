@@ -1,5 +1,6 @@
 // One frame file: exact round trip, and every kind of damage detected with a clear message.
 #include "cache/FrameFile.h"
+#include "support/TestMain.h"
 #include "unit/CacheTestData.h"
 
 #include <QtTest/QtTest>
@@ -368,5 +369,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestFrameFile)
+AIRTRAP_TEST_APPLESS(TestFrameFile)
 #include "TestFrameFile.moc"

@@ -7,6 +7,7 @@
 #include "post/SceneSolids.h"
 #include "post/ShapeTessellation.h"
 #include "post/WaterVolume.h"
+#include "support/TestMain.h"
 
 #include <QtTest>
 #include <cmath>
@@ -181,5 +182,5 @@ private:
     TriangleMesh trimmed_;
 };
 
-QTEST_APPLESS_MAIN(TestFreeSurface)
+AIRTRAP_TEST_APPLESS(TestFreeSurface)
 #include "TestFreeSurface.moc"

@@ -1,6 +1,7 @@
 // The cubic spline kernel: normalisation, compact support, gradient antisymmetry and agreement
 // with a finite-difference derivative.
 #include "sph/CubicSplineKernel.h"
+#include "support/TestMain.h"
 
 #include <QtTest>
 #include <cmath>
@@ -83,5 +84,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestKernel)
+AIRTRAP_TEST_APPLESS(TestKernel)
 #include "TestKernel.moc"

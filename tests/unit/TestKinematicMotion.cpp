@@ -3,6 +3,7 @@
 #include "core/Error.h"
 #include "rigid/KinematicMotion.h"
 #include "rigid/RigidIntegrator.h"
+#include "support/TestMain.h"
 
 #include <QtTest>
 #include <algorithm>
@@ -230,5 +231,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestKinematicMotion)
+AIRTRAP_TEST_APPLESS(TestKinematicMotion)
 #include "TestKinematicMotion.moc"

@@ -5,6 +5,7 @@
 #include "core/Error.h"
 #include "rigid/MassProperties.h"
 #include "rigid/MeshLoader.h"
+#include "support/TestMain.h"
 
 #include <Eigen/Eigenvalues>
 #include <QTemporaryDir>
@@ -153,5 +154,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestMassProperties)
+AIRTRAP_TEST_APPLESS(TestMassProperties)
 #include "TestMassProperties.moc"

@@ -3,6 +3,7 @@
 #include "MeshTestSupport.h"
 #include "core/Error.h"
 #include "rigid/MeshLoader.h"
+#include "support/TestMain.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
@@ -190,5 +191,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestMeshLoader)
+AIRTRAP_TEST_APPLESS(TestMeshLoader)
 #include "TestMeshLoader.moc"

@@ -3,6 +3,7 @@
 // points outside the domain, and reports occupancy.
 #include "sph/NeighborGrid.h"
 #include "sph/NeighborSweep.h"
+#include "support/TestMain.h"
 
 #include <QtTest>
 #include <algorithm>
@@ -200,5 +201,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestNeighborGrid)
+AIRTRAP_TEST_APPLESS(TestNeighborGrid)
 #include "TestNeighborGrid.moc"

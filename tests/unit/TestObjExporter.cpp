@@ -5,6 +5,7 @@
 #include "io/ObjExporter.h"
 #include "io/SequenceName.h"
 #include "post/ShapeTessellation.h"
+#include "support/TestMain.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
@@ -108,5 +109,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestObjExporter)
+AIRTRAP_TEST_APPLESS(TestObjExporter)
 #include "TestObjExporter.moc"

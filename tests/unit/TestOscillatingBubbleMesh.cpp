@@ -3,6 +3,7 @@
 // velocity; the wobble stays within k·r and dies out after T, leaving a sphere.
 #include "post/Icosphere.h"
 #include "post/OscillatingBubbleMesh.h"
+#include "support/TestMain.h"
 
 #include <Eigen/Eigenvalues>
 #include <QtTest>
@@ -131,5 +132,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestOscillatingBubbleMesh)
+AIRTRAP_TEST_APPLESS(TestOscillatingBubbleMesh)
 #include "TestOscillatingBubbleMesh.moc"

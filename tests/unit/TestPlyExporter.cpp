@@ -3,6 +3,7 @@
 #include "core/Error.h"
 #include "io/BubblePoints.h"
 #include "io/PlyExporter.h"
+#include "support/TestMain.h"
 #include "unit/CacheTestData.h"
 
 #include <QTemporaryDir>
@@ -172,5 +173,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestPlyExporter)
+AIRTRAP_TEST_APPLESS(TestPlyExporter)
 #include "TestPlyExporter.moc"

@@ -5,6 +5,7 @@
 #include "post/MeshFile.h"
 #include "post/PostStore.h"
 #include "post/ShapeTessellation.h"
+#include "support/TestMain.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
@@ -84,5 +85,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestPostStore)
+AIRTRAP_TEST_APPLESS(TestPostStore)
 #include "TestPostStore.moc"

@@ -5,6 +5,7 @@
 #include "rigid/RigidImpulse.h"
 #include "rigid/RigidIntegrator.h"
 #include "rigid/RotationVector.h"
+#include "support/TestMain.h"
 
 #include <QtTest>
 #include <algorithm>
@@ -322,5 +323,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestRigidDynamics)
+AIRTRAP_TEST_APPLESS(TestRigidDynamics)
 #include "TestRigidDynamics.moc"

@@ -3,6 +3,7 @@
 #include "scene/SceneJson.h"
 #include "scene/SceneSchema.h"
 #include "scene/SceneValidator.h"
+#include "support/TestMain.h"
 #include "unit/SceneTestSupport.h"
 
 #include <QtTest>
@@ -15,13 +16,6 @@ namespace {
 
 const std::string kDocument = std::string(AIRTRAP_SOURCE_DIR) + "/docs/SCENE_FORMAT.md";
 const std::string kGenerated = std::string(AIRTRAP_BINARY_DIR) + "/tests/SCENE_FORMAT.md";
-
-std::string readText(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
 
 //! "line N: expected … / found …" for the first line where the texts differ.
 std::string firstDifference(const std::string& expected, const std::string& actual) {
@@ -49,7 +43,7 @@ private Q_SLOTS:
     void documentIsUpToDate() {
         const std::string generated = sceneFormatMarkdown();
         std::ofstream(kGenerated, std::ios::binary) << generated;
-        const std::string committed = readText(kDocument);
+        const std::string committed = test::readText(kDocument);
         if (committed == generated)
             return;
         const std::string message = "docs/SCENE_FORMAT.md is out of date (" +
@@ -76,5 +70,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestSceneFormatDoc)
+AIRTRAP_TEST_APPLESS(TestSceneFormatDoc)
 #include "TestSceneFormatDoc.moc"

@@ -2,6 +2,7 @@
 // name the file, the JSON path, the value and the allowed range).
 #include "scene/SceneJson.h"
 #include "scene/SceneValidator.h"
+#include "support/TestMain.h"
 #include "unit/SceneTestSupport.h"
 
 #include <QDir>
@@ -17,13 +18,6 @@ using airtrap::test::errorMessage;
 namespace {
 
 const std::string kSamples = std::string(AIRTRAP_SOURCE_DIR) + "/samples/";
-
-std::string readText(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
 
 //! A valid scene as JSON, to be broken one key at a time.
 nlohmann::json validJson() {
@@ -59,7 +53,7 @@ private Q_SLOTS:
         const std::vector<std::string> warnings = validateScene(scene);
         QVERIFY2(warnings.empty(), warnings.empty() ? "" : warnings.front().c_str());
         // The samples were written by writeSceneFile, so they are in canonical form.
-        QCOMPARE(readText(path), sceneToText(scene));
+        QCOMPARE(test::readText(path), sceneToText(scene));
     }
 
     void damBreakMatchesTheSetup() {
@@ -300,5 +294,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestSceneJson)
+AIRTRAP_TEST_APPLESS(TestSceneJson)
 #include "TestSceneJson.moc"

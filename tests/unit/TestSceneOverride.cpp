@@ -1,5 +1,6 @@
 // `--set path=value`: every kind of value, array elements, and the messages for bad assignments.
 #include "scene/SceneOverride.h"
+#include "support/TestMain.h"
 #include "unit/SceneTestSupport.h"
 
 #include <QtTest>
@@ -132,5 +133,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestSceneOverride)
+AIRTRAP_TEST_APPLESS(TestSceneOverride)
 #include "TestSceneOverride.moc"

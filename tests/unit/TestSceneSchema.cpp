@@ -2,6 +2,7 @@
 // dotted path.
 #include "scene/ParameterCodec.h"
 #include "scene/SceneSchema.h"
+#include "support/TestMain.h"
 #include "unit/SceneTestSupport.h"
 
 #include <QtTest>
@@ -143,5 +144,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestSceneSchema)
+AIRTRAP_TEST_APPLESS(TestSceneSchema)
 #include "TestSceneSchema.moc"

@@ -1,6 +1,7 @@
 // Cross-field validation: container corners, fluid blocks in the domain, obstacles in the
 // domain, the particle cap, and overlap warnings.
 #include "scene/SceneValidator.h"
+#include "support/TestMain.h"
 #include "unit/SceneTestSupport.h"
 
 #include <QtTest>
@@ -161,5 +162,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestSceneValidator)
+AIRTRAP_TEST_APPLESS(TestSceneValidator)
 #include "TestSceneValidator.moc"

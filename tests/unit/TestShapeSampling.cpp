@@ -6,6 +6,7 @@
 #include "rigid/MeshLoader.h"
 #include "rigid/ShapeSampler.h"
 #include "rigid/SignedDistanceField.h"
+#include "support/TestMain.h"
 
 #include <QtTest>
 #include <functional>
@@ -134,5 +135,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestShapeSampling)
+AIRTRAP_TEST_APPLESS(TestShapeSampling)
 #include "TestShapeSampling.moc"

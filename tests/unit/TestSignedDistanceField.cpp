@@ -3,6 +3,7 @@
 #include "MeshTestSupport.h"
 #include "core/Error.h"
 #include "rigid/SignedDistanceField.h"
+#include "support/TestMain.h"
 
 #include <QtTest>
 #include <tbb/parallel_for.h>
@@ -119,5 +120,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestSignedDistanceField)
+AIRTRAP_TEST_APPLESS(TestSignedDistanceField)
 #include "TestSignedDistanceField.moc"

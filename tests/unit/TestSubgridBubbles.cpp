@@ -12,6 +12,7 @@
 #include "post/SubgridSpawner.h"
 #include "scene/SceneJson.h"
 #include "sim/FrameStats.h"
+#include "support/TestMain.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
@@ -325,5 +326,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestSubgridBubbles)
+AIRTRAP_TEST_APPLESS(TestSubgridBubbles)
 #include "TestSubgridBubbles.moc"

@@ -5,6 +5,7 @@
 #include "core/AtomicFile.h"
 #include "core/Error.h"
 #include "io/VdbExporter.h"
+#include "support/TestMain.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
@@ -152,5 +153,5 @@ private:
     WaterVolume water_;
 };
 
-QTEST_APPLESS_MAIN(TestVdbExporter)
+AIRTRAP_TEST_APPLESS(TestVdbExporter)
 #include "TestVdbExporter.moc"

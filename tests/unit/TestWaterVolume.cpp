@@ -3,6 +3,7 @@
 // closed mesh facing outward.
 #include "core/Error.h"
 #include "post/WaterVolume.h"
+#include "support/TestMain.h"
 
 #include <QtTest>
 #include <cmath>
@@ -121,5 +122,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestWaterVolume)
+AIRTRAP_TEST_APPLESS(TestWaterVolume)
 #include "TestWaterVolume.moc"

@@ -1,6 +1,7 @@
 #include "viewport/BodyDrawable.h"
 
 #include "viewport/BoxGizmoDrawable.h"
+#include "viewport/QtVectors.h"
 #include "viewport/RenderContext.h"
 #include "viewport/ShaderSources.h"
 
@@ -20,7 +21,7 @@ const QColor kStaticColour(150, 150, 155);
 const QColor kDynamicColour(215, 85, 55);
 const QColor kKinematicColour(70, 115, 225);
 
-const char* const kVertexShader = R"(#version 330 core
+const char* const kBodyVertexShader = R"(#version 330 core
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 uniform mat4 model;
@@ -34,7 +35,7 @@ void main() {
 
 // A key light from above and the front plus generous ambient, so the motion's colour reads on
 // every side; lit from both sides, so an inside-out mesh still looks solid.
-const char* const kFragmentShader = R"(#version 330 core
+const char* const kBodyFragmentShader = R"(#version 330 core
 uniform vec3 colour;
 in vec3 worldNormal;
 out vec4 fragColour;
@@ -48,10 +49,6 @@ void main() {
     fragColour = vec4(colour * (0.5 + 0.5 * diffuse), 1.0);
 }
 )";
-
-QVector3D rgb(const QColor& colour) {
-    return QVector3D(float(colour.redF()), float(colour.greenF()), float(colour.blueF()));
-}
 
 } // namespace
 
@@ -76,7 +73,7 @@ void BodyDrawable::setBodies(const SceneBodies& bodies) {
 }
 
 void BodyDrawable::initialize() {
-    program_ = ShaderSources{"bodies", kVertexShader, QString(), kFragmentShader}.build();
+    program_ = ShaderSources{"bodies", kBodyVertexShader, QString(), kBodyFragmentShader}.build();
     vertexArray_.create();
     buffer_.create();
     buffer_.setUsagePattern(QOpenGLBuffer::StaticDraw);
@@ -127,7 +124,7 @@ void BodyDrawable::draw(const RenderContext& context) {
         const QColor colour =
             body.item == selection_ ? BoxGizmoDrawable::highlightColour() : colourOf(body.motion);
         program_->setUniformValue("model", body.pose);
-        program_->setUniformValue("colour", rgb(colour));
+        program_->setUniformValue("colour", rgbVector(colour));
         context.gl.glDrawArrays(GL_TRIANGLES, firstVertex_[i], body.solid->vertexCount());
     }
     program_->release();

@@ -1,5 +1,6 @@
 #include "viewport/BubbleDrawable.h"
 
+#include "viewport/QtVectors.h"
 #include "viewport/RenderContext.h"
 #include "viewport/ShaderSources.h"
 #include "viewport/SolidMesh.h"
@@ -17,7 +18,7 @@ namespace {
 // of red until both reach white) and no body colour has these proportions at any shading.
 const QColor kBubbleColour(190, 198, 245);
 
-const char* const kVertexShader = R"(#version 330 core
+const char* const kBubbleVertexShader = R"(#version 330 core
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 layout(location = 2) in vec3 centre;
@@ -41,7 +42,7 @@ void main() {
 
 // Lit from the upper left of the view like the water; the rim fades towards white and a sharp
 // small highlight sits on top, so the sphere reads as a glassy shell rather than a solid ball.
-const char* const kFragmentShader = R"(#version 330 core
+const char* const kBubbleFragmentShader = R"(#version 330 core
 uniform vec3 colour;
 in vec3 eyePosition;
 in vec3 eyeNormal;
@@ -57,10 +58,6 @@ void main() {
     fragColour = vec4(mix(shaded, vec3(1.0), 0.6 * rim) + vec3(specular), 1.0);
 }
 )";
-
-QVector3D rgb(const QColor& colour) {
-    return QVector3D(float(colour.redF()), float(colour.greenF()), float(colour.blueF()));
-}
 
 } // namespace
 
@@ -105,7 +102,8 @@ void BubbleDrawable::setSubgridBubbles(const std::vector<SubgridBubble>& bubbles
 }
 
 void BubbleDrawable::initialize() {
-    program_ = ShaderSources{"bubbles", kVertexShader, QString(), kFragmentShader}.build();
+    program_ =
+        ShaderSources{"bubbles", kBubbleVertexShader, QString(), kBubbleFragmentShader}.build();
     vertexArray_.create();
     sphereBuffer_.create();
     sphereBuffer_.setUsagePattern(QOpenGLBuffer::StaticDraw);
@@ -167,7 +165,7 @@ void BubbleDrawable::draw(const RenderContext& context) {
     program_->bind();
     program_->setUniformValue("view", context.view);
     program_->setUniformValue("projection", context.projection);
-    program_->setUniformValue("colour", rgb(kBubbleColour));
+    program_->setUniformValue("colour", rgbVector(kBubbleColour));
     QOpenGLVertexArrayObject::Binder binder(&vertexArray_);
     context.gl.glDrawArraysInstanced(GL_TRIANGLES, 0, sphereVertexCount_, uploadedCount_);
     program_->release();

@@ -11,7 +11,7 @@ namespace airtrap {
 
 namespace {
 
-const char* const kVertexShader = R"(#version 330 core
+const char* const kLineBatchVertexShader = R"(#version 330 core
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec4 colour;
 uniform mat4 viewProjection;
@@ -76,7 +76,7 @@ void main() {
 }
 )";
 
-const char* const kFragmentShader = R"(#version 330 core
+const char* const kLineBatchFragmentShader = R"(#version 330 core
 uniform float halfWidth;
 in vec4 lineColour;
 noperspective in float across;
@@ -102,7 +102,9 @@ void LineBatch::setSegments(std::vector<LineVertex> vertices) {
 }
 
 void LineBatch::initialize() {
-    program_ = ShaderSources{"lines", kVertexShader, kGeometryShader, kFragmentShader}.build();
+    program_ =
+        ShaderSources{"lines", kLineBatchVertexShader, kGeometryShader, kLineBatchFragmentShader}
+            .build();
     vertexArray_.create();
     buffer_.create();
     buffer_.setUsagePattern(QOpenGLBuffer::StaticDraw);

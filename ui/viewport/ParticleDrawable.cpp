@@ -21,7 +21,7 @@ namespace {
 constexpr float kMinSpeedScale = 0.05f; // m/s
 
 // The sprite covers the sphere's projected diameter: 2 r × (pixels per metre at depth w).
-const char* const kVertexShader = R"(#version 330 core
+const char* const kParticleVertexShader = R"(#version 330 core
 layout(location = 0) in vec3 position;
 layout(location = 1) in float speed;
 uniform mat4 view;
@@ -96,7 +96,8 @@ float ParticleDrawable::effectiveSpeedScale() const {
 }
 
 void ParticleDrawable::initialize() {
-    program_ = ShaderSources{"particles", kVertexShader, QString(), fragmentShader()}.build();
+    program_ =
+        ShaderSources{"particles", kParticleVertexShader, QString(), fragmentShader()}.build();
     vertexArray_.create();
     buffer_.create();
     buffer_.setUsagePattern(QOpenGLBuffer::DynamicDraw);

@@ -1,30 +1,24 @@
 #include "viewport/SceneGizmos.h"
 
 #include "scene/InflowNozzle.h"
+#include "viewport/QtVectors.h"
 
 namespace airtrap {
 
-namespace {
-
-QVector3D toQt(const Vec3d& v) {
-    return QVector3D(float(v.x()), float(v.y()), float(v.z()));
-}
-
-} // namespace
-
 SceneGizmos::SceneGizmos(const Scene& scene) : headroom_(float(scene.container.headroom)) {
     boxes_.push_back({GizmoBox::Kind::Container, SceneItem::sectionItem("container"),
-                      toQt(scene.container.min), toQt(scene.container.max)});
+                      toQVector3D(scene.container.min), toQVector3D(scene.container.max)});
     for (std::size_t i = 0; i < scene.fluidBlocks.size(); ++i) {
         const FluidBlock& block = scene.fluidBlocks[i];
         boxes_.push_back({GizmoBox::Kind::FluidBlock, SceneItem::elementItem("fluid_blocks", i),
-                          toQt(block.min), toQt(block.max)});
+                          toQVector3D(block.min), toQVector3D(block.max)});
     }
     for (std::size_t i = 0; i < scene.obstacles.size(); ++i) {
         const BoxObstacle& obstacle = scene.obstacles[i];
         const Vec3d half = 0.5 * obstacle.size;
         boxes_.push_back({GizmoBox::Kind::Obstacle, SceneItem::elementItem("obstacles", i),
-                          toQt(obstacle.center - half), toQt(obstacle.center + half)});
+                          toQVector3D(obstacle.center - half),
+                          toQVector3D(obstacle.center + half)});
     }
     for (std::size_t i = 0; i < scene.emitters.size(); ++i) {
         const InflowEmitterSettings& emitter = scene.emitters[i];
@@ -34,7 +28,8 @@ SceneGizmos::SceneGizmos(const Scene& scene) : headroom_(float(scene.container.h
         const Vec3d along = 0.25 * exit.maxCoeff() * emitter.direction.normalized().cwiseAbs();
         const Vec3d half = exit + along;
         boxes_.push_back({GizmoBox::Kind::Emitter, SceneItem::elementItem("emitters", i),
-                          toQt(emitter.position - half), toQt(emitter.position + half)});
+                          toQVector3D(emitter.position - half),
+                          toQVector3D(emitter.position + half)});
     }
 }
 

@@ -1,5 +1,7 @@
 #include "viewport/SolidMesh.h"
 
+#include "viewport/QtVectors.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -22,10 +24,6 @@ QVector3D onSphere(int ring, int segment) {
 QVector3D around(int segment) {
     const float azimuth = 2.0f * std::numbers::pi_v<float> * float(segment) / float(kSegments);
     return QVector3D(std::cos(azimuth), 0.0f, std::sin(azimuth));
-}
-
-QVector3D toQt(const Vec3d& v) {
-    return QVector3D(float(v.x()), float(v.y()), float(v.z()));
 }
 
 //! Möller–Trumbore: distance along the ray to triangle (a, b, c), or a negative number.
@@ -117,8 +115,9 @@ SolidMesh SolidMesh::fromMesh(const TriangleMesh& mesh) {
     SolidMesh solid;
     solid.vertices.reserve(3 * mesh.triangleCount());
     for (const TriangleMesh::Triangle& triangle : mesh.triangles)
-        solid.addFlatTriangle(toQt(mesh.vertices[triangle[0]]), toQt(mesh.vertices[triangle[1]]),
-                              toQt(mesh.vertices[triangle[2]]));
+        solid.addFlatTriangle(toQVector3D(mesh.vertices[triangle[0]]),
+                              toQVector3D(mesh.vertices[triangle[1]]),
+                              toQVector3D(mesh.vertices[triangle[2]]));
     return solid;
 }
 

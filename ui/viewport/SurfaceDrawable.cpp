@@ -1,6 +1,7 @@
 #include "viewport/SurfaceDrawable.h"
 
 #include "io/ObjExporter.h"
+#include "viewport/QtVectors.h"
 #include "viewport/RenderContext.h"
 #include "viewport/ShaderSources.h"
 
@@ -16,7 +17,7 @@ namespace {
 
 const QColor kSurfaceColour(40, 120, 190);
 
-const char* const kVertexShader = R"(#version 330 core
+const char* const kSurfaceVertexShader = R"(#version 330 core
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 uniform mat4 view;
@@ -33,7 +34,7 @@ void main() {
 
 // Grazing views are more opaque and paler than straight-on ones, as on real water, which is what
 // shows the surface's shape; a small highlight marks its slopes.
-const char* const kFragmentShader = R"(#version 330 core
+const char* const kSurfaceFragmentShader = R"(#version 330 core
 uniform vec3 colour;
 uniform float opacity;
 in vec3 eyePosition;
@@ -55,10 +56,6 @@ void main() {
 }
 )";
 
-QVector3D rgb(const QColor& colour) {
-    return QVector3D(float(colour.redF()), float(colour.greenF()), float(colour.blueF()));
-}
-
 } // namespace
 
 SurfaceDrawable::SurfaceDrawable()
@@ -76,7 +73,8 @@ void SurfaceDrawable::setMesh(std::shared_ptr<const TriangleMesh> mesh) {
 }
 
 void SurfaceDrawable::initialize() {
-    program_ = ShaderSources{"surface", kVertexShader, QString(), kFragmentShader}.build();
+    program_ =
+        ShaderSources{"surface", kSurfaceVertexShader, QString(), kSurfaceFragmentShader}.build();
     vertexArray_.create();
     vertexBuffer_.create();
     vertexBuffer_.setUsagePattern(QOpenGLBuffer::DynamicDraw);
@@ -136,7 +134,7 @@ void SurfaceDrawable::draw(const RenderContext& context) {
     program_->bind();
     program_->setUniformValue("view", context.view);
     program_->setUniformValue("projection", context.projection);
-    program_->setUniformValue("colour", rgb(kSurfaceColour));
+    program_->setUniformValue("colour", rgbVector(kSurfaceColour));
     program_->setUniformValue("opacity", opacity_);
     QOpenGLVertexArrayObject::Binder binder(&vertexArray_);
     gl.glDrawElements(GL_TRIANGLES, uploadedIndices_, GL_UNSIGNED_INT, nullptr);
