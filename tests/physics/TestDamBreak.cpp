@@ -80,8 +80,6 @@ double relativeError(const std::vector<Point>& simulated, const Point& measured)
     return interpolate(simulated, measured.T) / measured.Z - 1.0;
 }
 
-} // namespace
-
 class TestDamBreak : public QObject {
     Q_OBJECT
 
@@ -139,6 +137,8 @@ private Q_SLOTS:
         }
     }
 };
+
+} // namespace
 
 AIRTRAP_TEST_APPLESS(TestDamBreak)
 #include "TestDamBreak.moc"
