@@ -298,7 +298,7 @@ private Q_SLOTS:
         QCOMPARE(changed.outside, 0);
     }
 
-    void subgridBubblesAreDrawnAsSpheresWithTheBubbles() {
+    void subgridBubblesAreDrawnAsPointsInTheBubbleColour() {
         const auto viewport = shownViewport();
         QVERIFY(viewport);
         const Scene scene = damBreak();
@@ -310,8 +310,12 @@ private Q_SLOTS:
         small.position = Vec3d(1.6, 0.6, 0.2); // in the empty part of the tank
         SubgridBubble other = small;
         other.position = Vec3d(1.2, 0.6, 0.2);
-        viewport->setSubgridBubbles({small, other});
-        QCOMPARE(viewport->subgridBubbleCount(), 2);
+        // A tenth of a millimetre: far under a pixel, still drawn at the minimum size.
+        SubgridBubble speck = small;
+        speck.radius = 1e-4;
+        speck.position = Vec3d(1.4, 0.9, 0.2);
+        viewport->setSubgridBubbles({small, other, speck});
+        QCOMPARE(viewport->subgridBubbleCount(), 3);
         QCOMPARE(viewport->bubbleCount(), 0);
         const QImage image = viewport->grabFramebuffer();
         const qreal ratio = viewport->devicePixelRatio();
@@ -320,6 +324,11 @@ private Q_SLOTS:
             QCOMPARE(countAround(image, centre, 2, ratio, isBubble), 25);
             QCOMPARE(countAround(without, centre, 2, ratio, isBubble), 0);
         }
+        const QPointF speckCentre = project(*viewport, toQt(speck.position));
+        // A disc 3 pixels across: more than the single pixel of a plain GL point, at most 3 × 3.
+        const int speckPixels = countAround(image, speckCentre, 3, ratio, isBubble);
+        QVERIFY2(speckPixels >= 4 && speckPixels <= 9, qPrintable(QString::number(speckPixels)));
+        QCOMPARE(countAround(without, speckCentre, 3, ratio, isBubble), 0);
         viewport->setSubgridBubbles({});
         QCOMPARE(viewport->subgridBubbleCount(), 0);
         QCOMPARE(viewport->grabFramebuffer(), without);

@@ -88,19 +88,6 @@ void BubbleDrawable::setBubbles(const std::vector<BubbleState>& bubbles) {
     dirty_ = true;
 }
 
-void BubbleDrawable::setSubgridBubbles(const std::vector<SubgridBubble>& bubbles) {
-    subgrid_.clear();
-    subgrid_.reserve(bubbles.size());
-    for (const SubgridBubble& bubble : bubbles) {
-        const Vec3f centre = bubble.position.cast<float>();
-        const auto radius = float(bubble.radius);
-        subgrid_.push_back({{centre.x(), centre.y(), centre.z()},
-                            {0.0f, 0.0f, 0.0f, 1.0f},
-                            {radius, radius, radius}});
-    }
-    dirty_ = true;
-}
-
 void BubbleDrawable::initialize() {
     program_ =
         ShaderSources{"bubbles", kBubbleVertexShader, QString(), kBubbleFragmentShader}.build();
@@ -146,12 +133,10 @@ void BubbleDrawable::uploadSphere() {
 void BubbleDrawable::uploadInstances() {
     static_assert(sizeof(Instance) == 10 * sizeof(float), "instances go to the GPU as they are");
     dirty_ = false;
-    uploaded_ = trapped_;
-    uploaded_.insert(uploaded_.end(), subgrid_.begin(), subgrid_.end());
     instanceBuffer_.bind();
-    instanceBuffer_.allocate(uploaded_.data(), int(uploaded_.size() * sizeof(Instance)));
+    instanceBuffer_.allocate(trapped_.data(), int(trapped_.size() * sizeof(Instance)));
     instanceBuffer_.release();
-    uploadedCount_ = int(uploaded_.size());
+    uploadedCount_ = int(trapped_.size());
 }
 
 void BubbleDrawable::draw(const RenderContext& context) {

@@ -4,11 +4,9 @@
 // ellipsoid of paper eqs. 7–10 (OscillatingBubbleMesh), stretched along the bubble's velocity and
 // wobbling after its birth. Every bubble is one instance of a unit sphere, turned and scaled by
 // its ellipsoid's axes, so a frame with thousands of bubbles is still one draw call; the sphere
-// is uploaded once, the instances again whenever the frame changes. The sub-grid bubbles of the
-// post stage (paper §4.2) are spheres of the same look in the same call.
+// is uploaded once, the instances again whenever the frame changes.
 #include "bubbles/BubbleState.h"
 #include "post/OscillatingBubbleMesh.h"
-#include "post/SubgridBubble.h"
 #include "viewport/Drawable.h"
 
 #include <QColor>
@@ -31,14 +29,10 @@ public:
     void setShape(const BubbleMeshSettings& settings);
     //! Shows these bubbles (a frame's SimulationState::bubbles); empty shows none.
     void setBubbles(const std::vector<BubbleState>& bubbles);
-    //! Shows these sub-grid bubbles too (a frame's post results); empty shows none.
-    void setSubgridBubbles(const std::vector<SubgridBubble>& bubbles);
     //! Trapped bubbles drawn by the next paint.
     int bubbleCount() const { return int(trapped_.size()); }
-    //! Sub-grid bubbles drawn by the next paint.
-    int subgridBubbleCount() const { return int(subgrid_.size()); }
 
-    //! The bubbles' colour before shading.
+    //! The bubbles' colour before shading (the sub-grid bubbles' too).
     static QColor colour();
 
     //! Builds the shader, the sphere and the instance buffer.
@@ -67,8 +61,6 @@ private:
 
     OscillatingBubbleMesh shape_{BubbleMeshSettings{}};
     std::vector<Instance> trapped_;
-    std::vector<Instance> subgrid_;
-    std::vector<Instance> uploaded_; //!< both, as the instance buffer holds them
     int uploadedCount_ = 0;
     bool dirty_ = false;
 };

@@ -136,7 +136,7 @@ void ViewportWidget::setWaterSurface(std::shared_ptr<const TriangleMesh> mesh) {
 }
 
 void ViewportWidget::setSubgridBubbles(const std::vector<SubgridBubble>& bubbles) {
-    bubbleDrawable_.setSubgridBubbles(bubbles);
+    subgridBubbles_.setBubbles(bubbles);
     update();
 }
 
@@ -201,8 +201,9 @@ float ViewportWidget::aspectRatio() const {
 
 // --- OpenGL --------------------------------------------------------------------------------------
 
-std::array<Drawable*, 7> ViewportWidget::drawables() {
-    return {&bubbleDrawable_, &bodyDrawable_, &particles_, &surface_, &grid_, &axes_, &boxes_};
+std::array<Drawable*, 8> ViewportWidget::drawables() {
+    return {&bubbleDrawable_, &subgridBubbles_, &bodyDrawable_, &particles_,
+            &surface_,        &grid_,           &axes_,         &boxes_};
 }
 
 void ViewportWidget::initializeGL() {
@@ -296,6 +297,7 @@ void ViewportWidget::drawSolids(const RenderContext& context) {
         gl.glStencilFunc(GL_ALWAYS, 1, 0xFF);
     }
     bubbleDrawable_.draw(context);
+    subgridBubbles_.draw(context);
     if (overWater)
         gl.glStencilFunc(GL_ALWAYS, 0, 0xFF);
     if (hasScene_)

@@ -20,6 +20,7 @@
 #include "viewport/SceneBodies.h"
 #include "viewport/SceneGizmos.h"
 #include "viewport/SpeedLegend.h"
+#include "viewport/SubgridBubbleDrawable.h"
 #include "viewport/SurfaceDrawable.h"
 
 #include <QColor>
@@ -66,7 +67,7 @@ public:
     //! Bubbles of the shown frame that the view draws.
     int bubbleCount() const { return bubbleDrawable_.bubbleCount(); }
     //! Sub-grid bubbles drawn now.
-    int subgridBubbleCount() const { return bubbleDrawable_.subgridBubbleCount(); }
+    int subgridBubbleCount() const { return subgridBubbles_.bubbleCount(); }
     //! Triangles of the free-surface mesh drawn now (0: none shown).
     int surfaceTriangleCount() const { return showSurface_ ? surface_.triangleCount() : 0; }
     //! The scene's bodies where the view shows them now (scene or frame poses).
@@ -131,7 +132,7 @@ protected:
 
 private:
     //! Everything drawn in 3D: opaque bubbles, bodies and water first, lines over them.
-    std::array<Drawable*, 7> drawables();
+    std::array<Drawable*, 8> drawables();
     //! Puts the bodies where the shown frame has them (or at their scene poses) for drawing.
     void placeBodies();
     //! Frees every GL object while the context is current (before it goes away).
@@ -154,6 +155,7 @@ private:
     BodyDrawable bodyDrawable_;
     ParticleDrawable particles_;
     BubbleDrawable bubbleDrawable_;
+    SubgridBubbleDrawable subgridBubbles_;
     SurfaceDrawable surface_;
     SpeedLegend legend_;
 

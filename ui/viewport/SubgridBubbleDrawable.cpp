@@ -1,0 +1,142 @@
+#include "viewport/SubgridBubbleDrawable.h"
+
+#include "viewport/BubbleDrawable.h"
+#include "viewport/QtVectors.h"
+#include "viewport/RenderContext.h"
+#include "viewport/ShaderSources.h"
+
+#include <QOpenGLContext>
+#include <QOpenGLExtraFunctions>
+#include <cstddef>
+#include <cstdint>
+
+namespace airtrap {
+
+namespace {
+
+// The point covers the sphere's projected diameter, 2 r × (pixels per metre at depth w).
+const char* const kSubgridVertexShader = R"(#version 330 core
+layout(location = 0) in vec3 centre;
+layout(location = 1) in float radius;
+uniform mat4 view;
+uniform mat4 projection;
+uniform float viewportHeight;
+uniform float minimumPixels;
+out vec3 eyeCentre;
+out float eyeRadius;
+void main() {
+    vec4 eye = view * vec4(centre, 1.0);
+    eyeCentre = eye.xyz;
+    eyeRadius = radius;
+    gl_Position = projection * eye;
+    gl_PointSize = max(radius * projection[1][1] * viewportHeight / gl_Position.w, minimumPixels);
+}
+)";
+
+// The trapped bubbles' glassy look on a sphere read off the point's disc; its depth is the
+// sphere's surface, so points sort with the water and the bodies around them.
+const char* const kSubgridFragmentShader = R"(#version 330 core
+uniform mat4 projection;
+uniform vec3 colour;
+in vec3 eyeCentre;
+in float eyeRadius;
+out vec4 fragColour;
+const vec3 lightDirection = normalize(vec3(-0.35, 0.55, 0.75));
+void main() {
+    vec2 disc = gl_PointCoord * 2.0 - 1.0;
+    disc.y = -disc.y; // gl_PointCoord grows downwards
+    float r2 = dot(disc, disc);
+    if (r2 > 1.0) {
+        discard;
+    }
+    vec3 n = vec3(disc, sqrt(1.0 - r2));
+    float rim = pow(1.0 - n.z, 3.0);
+    float diffuse = max(dot(n, lightDirection), 0.0);
+    vec3 halfway = normalize(lightDirection + vec3(0.0, 0.0, 1.0));
+    float specular = 0.35 * pow(max(dot(n, halfway), 0.0), 128.0);
+    vec3 shaded = colour * (0.6 + 0.4 * diffuse);
+    fragColour = vec4(mix(shaded, vec3(1.0), 0.6 * rim) + vec3(specular), 1.0);
+    vec4 surface = projection * vec4(eyeCentre + n * eyeRadius, 1.0);
+    gl_FragDepth = 0.5 * surface.z / surface.w + 0.5;
+}
+)";
+
+} // namespace
+
+SubgridBubbleDrawable::SubgridBubbleDrawable() : buffer_(QOpenGLBuffer::VertexBuffer) {}
+
+SubgridBubbleDrawable::~SubgridBubbleDrawable() = default;
+
+void SubgridBubbleDrawable::setBubbles(const std::vector<SubgridBubble>& bubbles) {
+    points_.clear();
+    points_.reserve(bubbles.size());
+    for (const SubgridBubble& bubble : bubbles) {
+        const Vec3f centre = bubble.position.cast<float>();
+        points_.push_back({{centre.x(), centre.y(), centre.z()}, float(bubble.radius)});
+    }
+    dirty_ = true;
+}
+
+void SubgridBubbleDrawable::initialize() {
+    program_ =
+        ShaderSources{"sub-grid bubbles", kSubgridVertexShader, QString(), kSubgridFragmentShader}
+            .build();
+    vertexArray_.create();
+    buffer_.create();
+    buffer_.setUsagePattern(QOpenGLBuffer::DynamicDraw);
+    QOpenGLExtraFunctions* gl = QOpenGLContext::currentContext()->extraFunctions();
+    QOpenGLVertexArrayObject::Binder binder(&vertexArray_);
+    buffer_.bind();
+    const auto stride = GLsizei(sizeof(Point));
+    gl->glEnableVertexAttribArray(0);
+    gl->glEnableVertexAttribArray(1);
+    gl->glVertexAttribPointer(
+        0, 3, GL_FLOAT, GL_FALSE, stride,
+        reinterpret_cast<const void*>(std::intptr_t(offsetof(Point, centre))));
+    gl->glVertexAttribPointer(
+        1, 1, GL_FLOAT, GL_FALSE, stride,
+        reinterpret_cast<const void*>(std::intptr_t(offsetof(Point, radius))));
+    buffer_.release();
+    uploadedCount_ = 0;
+    dirty_ = true;
+}
+
+void SubgridBubbleDrawable::upload() {
+    static_assert(sizeof(Point) == 4 * sizeof(float), "points go to the GPU as they are");
+    dirty_ = false;
+    buffer_.bind();
+    buffer_.allocate(points_.data(), int(points_.size() * sizeof(Point)));
+    buffer_.release();
+    uploadedCount_ = int(points_.size());
+}
+
+void SubgridBubbleDrawable::draw(const RenderContext& context) {
+    if (!program_)
+        return;
+    if (dirty_)
+        upload();
+    if (uploadedCount_ == 0)
+        return;
+    QOpenGLExtraFunctions& gl = context.gl;
+    gl.glEnable(GL_DEPTH_TEST);
+    gl.glEnable(GL_PROGRAM_POINT_SIZE);
+    program_->bind();
+    program_->setUniformValue("view", context.view);
+    program_->setUniformValue("projection", context.projection);
+    program_->setUniformValue("viewportHeight", float(context.framebufferSize.height()));
+    program_->setUniformValue("minimumPixels", kMinimumPixels);
+    program_->setUniformValue("colour", rgbVector(BubbleDrawable::colour()));
+    QOpenGLVertexArrayObject::Binder binder(&vertexArray_);
+    gl.glDrawArrays(GL_POINTS, 0, uploadedCount_);
+    program_->release();
+    gl.glDisable(GL_PROGRAM_POINT_SIZE);
+}
+
+void SubgridBubbleDrawable::release() {
+    program_.reset();
+    buffer_.destroy();
+    vertexArray_.destroy();
+    uploadedCount_ = 0;
+}
+
+} // namespace airtrap
