@@ -47,7 +47,7 @@ float InteractionPass::boundaryDensityRate(std::size_t i, const InteractionInput
     const Vec3f vi = in.fluid.velocities[i];
     float rate = 0.0f;
     for (const BoundaryLayer* layer : in.boundary.layers()) {
-        if (layer->size() == 0 || !layer->reaches(xi))
+        if (layer->size() == 0 || !in.boundary.mayReach(layer, i, xi))
             continue;
         const auto& bx = layer->positions();
         const auto& bv = layer->velocities();
@@ -136,7 +136,7 @@ Vec3f InteractionPass::boundaryForce(std::size_t i, const InteractionInputs& in,
     contact.distance2 = constants_.contactRadius * constants_.contactRadius;
     Vec3f force = Vec3f::Zero();
     for (const BoundaryLayer* layer : in.boundary.layers()) {
-        if (layer->size() == 0 || !layer->reaches(xi))
+        if (layer->size() == 0 || !in.boundary.mayReach(layer, i, xi))
             continue;
         const auto& bx = layer->positions();
         layer->grid().forEachNeighborRange(

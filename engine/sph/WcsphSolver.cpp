@@ -7,6 +7,7 @@
 #include <cmath>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 #include <tbb/parallel_reduce.h>
 
 namespace airtrap {
@@ -99,6 +100,10 @@ StepReport WcsphSolver::step(SimulationState& state, double timeToFrameEnd) {
         StepPhases::Scope scope(phases_, StepPhases::Bodies);
         placeBodies(state);
     }
+    if (boundary_.movingLayer().size() > 0) {
+        StepPhases::Scope scope(phases_, StepPhases::Bodies);
+        boundary_.markWaterNearMovingLayer(grid_, sortedPositions_, kernel_.supportRadius());
+    }
     report.timeStep = chooseTimeStep(report.maxSpeed, state.lastMaxAcceleration, timeToFrameEnd);
     const InteractionInputs inputs{fluid, sortedPositions_, grid_, boundary_};
     {
@@ -124,14 +129,31 @@ StepReport WcsphSolver::step(SimulationState& state, double timeToFrameEnd) {
         StepPhases::Scope scope(phases_, StepPhases::BubbleForces);
         bubbles_->measureSurroundings(bodies_, firstBubble_, fluid, sortedPositions_, grid_);
     }
+    bool bodiesFinite = true;
+    bool waterFinite = true;
     if (boundary_.hasDynamicBodies()) {
-        StepPhases::Scope scope(phases_, StepPhases::Bodies);
-        report.nonFinite = !moveDynamicBodies(inputs, state, report.timeStep);
-    }
-    {
+        {
+            StepPhases::Scope scope(phases_, StepPhases::Bodies);
+            passes_.bodyReactions(inputs, pressureOverDensity2_, contacts_, report.timeStep,
+                                  reactions_);
+        }
+        // The bodies move on their reactions alone and the water on its accelerations alone: the
+        // serial rigid-body step runs beside the water's parallel update instead of leaving the
+        // other threads idle. Their phase times overlap.
+        tbb::parallel_invoke(
+            [&] {
+                StepPhases::Scope scope(phases_, StepPhases::Bodies);
+                bodiesFinite = moveDynamicBodies(state, report.timeStep);
+            },
+            [&] {
+                StepPhases::Scope scope(phases_, StepPhases::Integrate);
+                waterFinite = !integrate(fluid, report.timeStep);
+            });
+    } else {
         StepPhases::Scope scope(phases_, StepPhases::Integrate);
-        report.nonFinite = integrate(fluid, report.timeStep) || report.nonFinite;
+        waterFinite = !integrate(fluid, report.timeStep);
     }
+    report.nonFinite = !bodiesFinite || !waterFinite;
     state.lastMaxAcceleration = report.maxAcceleration;
     state.lastTimeStep = report.timeStep;
     ++state.steps;
@@ -151,11 +173,10 @@ void WcsphSolver::followPaths(SimulationState& state) {
 void WcsphSolver::placeBodies(SimulationState& state) {
     const std::size_t sceneBodies = firstBubble_ - sceneryCount_;
     if (state.bodies.size() != sceneBodies)
-        throw Error(ErrorKind::CacheCorrupt, "the state holds " +
-                                                 std::to_string(state.bodies.size()) +
-                                                 " rigid bodies but the scene has " +
-                                                 std::to_string(sceneBodies) +
-                                                 "; the frame was baked from another scene");
+        throw Error(ErrorKind::CacheCorrupt,
+                    "the state holds " + std::to_string(state.bodies.size()) +
+                        " rigid bodies but the scene has " + std::to_string(sceneBodies) +
+                        "; the frame was baked from another scene");
     if (!state.bubbles.empty() && !bubbles_)
         throw Error(ErrorKind::CacheCorrupt,
                     "the state holds bubbles but the scene has bubbles.enabled = false");
@@ -167,9 +188,7 @@ void WcsphSolver::placeBodies(SimulationState& state) {
     boundary_.rebuild(bodies_);
 }
 
-bool WcsphSolver::moveDynamicBodies(const InteractionInputs& inputs, SimulationState& state,
-                                    double dt) {
-    passes_.bodyReactions(inputs, pressureOverDensity2_, contacts_, dt, reactions_);
+bool WcsphSolver::moveDynamicBodies(SimulationState& state, double dt) {
     if (!bubbles_ || state.bubbles.empty()) {
         coupling_.advance(bodies_, boundary_, reactions_, dt);
         return storeMovedBodies(state);

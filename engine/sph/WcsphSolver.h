@@ -87,9 +87,10 @@ private:
     void placeBodies(SimulationState& state);
     //! Copies the moved bodies back into the state; returns false when one is not finite.
     bool storeMovedBodies(SimulationState& state) const;
-    //! The water's reaction on the dynamic bodies, their contacts and motion over `dt`; returns
-    //! false when a body's state is no longer finite.
-    bool moveDynamicBodies(const InteractionInputs& inputs, SimulationState& state, double dt);
+    //! The dynamic bodies' contacts and motion over `dt` under the water's reactions_ (gathered
+    //! before, from the water as the force pass saw it); returns false when a body's state is no
+    //! longer finite. Touches no water, so it may run beside integrate().
+    bool moveDynamicBodies(SimulationState& state, double dt);
 
     SolverSettings settings_;
     CubicSplineKernel kernel_;
