@@ -9,8 +9,9 @@ namespace airtrap {
 
 class StepPhases {
 public:
-    //! Bodies: placing moving bodies' boundary particles (bubbles' too), the water's reaction on
-    //! dynamic bodies, their contacts and motion. BubbleForces: measuring the water around each
+    //! Bodies: placing moving bodies' boundary particles (bubbles' too), marking the water near
+    //! them, the water's reaction on dynamic bodies, their contacts and motion; the motion runs
+    //! beside Integrate, so the two overlap in time. BubbleForces: measuring the water around each
     //! bubble for its drag, steering and deletion rules (applying them is a few operations per
     //! bubble, inside Bodies). BubblePockets: finding air pockets and creating bubbles, once per
     //! frame. BubbleDeletion: the deletion rules, after every step.
