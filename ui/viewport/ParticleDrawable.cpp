@@ -3,6 +3,7 @@
 #include "viewport/RenderContext.h"
 #include "viewport/ShaderSources.h"
 #include "viewport/SpeedColormap.h"
+#include "viewport/SphereSprite.h"
 
 #include <QOpenGLContext>
 #include <QOpenGLExtraFunctions>
@@ -20,8 +21,8 @@ namespace {
 // Slowest scale the colours stretch over: water at rest (frame 1) must stay blue, not divide by 0.
 constexpr float kMinSpeedScale = 0.05f; // m/s
 
-// The sprite covers the sphere's projected diameter: 2 r × (pixels per metre at depth w).
-const char* const kParticleVertexShader = R"(#version 330 core
+// The sprite covers the sphere's projected diameter.
+const char* const kParticleVertexShaderMain = R"(
 layout(location = 0) in vec3 position;
 layout(location = 1) in float speed;
 uniform mat4 view;
@@ -35,7 +36,7 @@ void main() {
     vec4 eye = view * vec4(position, 1.0);
     eyeCentre = eye.xyz;
     gl_Position = projection * eye;
-    gl_PointSize = max(radius * projection[1][1] * viewportHeight / gl_Position.w, 1.0);
+    gl_PointSize = max(sphereSpritePixels(radius, projection, viewportHeight, gl_Position.w), 1.0);
     colourParameter = speed / speedScale;
 }
 )";
@@ -51,26 +52,24 @@ in float colourParameter;
 out vec4 fragColour;
 const vec3 lightDirection = normalize(vec3(-0.35, 0.55, 0.75));
 void main() {
-    vec2 disc = gl_PointCoord * 2.0 - 1.0;
-    disc.y = -disc.y; // gl_PointCoord grows downwards
-    float r2 = dot(disc, disc);
-    if (r2 > 1.0) {
-        discard;
-    }
-    vec3 normal = vec3(disc, sqrt(1.0 - r2));
+    vec3 normal = sphereSpriteNormal();
     float diffuse = max(dot(normal, lightDirection), 0.0);
     vec3 halfway = normalize(lightDirection + vec3(0.0, 0.0, 1.0));
     float specular = 0.3 * pow(max(dot(normal, halfway), 0.0), 48.0);
     vec3 base = speedColour(colourParameter);
     fragColour = vec4(base * (0.35 + 0.65 * diffuse) + vec3(specular), 1.0);
-    vec4 surface = projection * vec4(eyeCentre + normal * radius, 1.0);
-    gl_FragDepth = 0.5 * surface.z / surface.w + 0.5;
+    gl_FragDepth = sphereSpriteDepth(projection, eyeCentre, normal, radius);
 }
 )";
 
+QString vertexShader() {
+    return QStringLiteral("#version 330 core\n") + SphereSprite::vertexFunctions() +
+           QString::fromLatin1(kParticleVertexShaderMain);
+}
+
 QString fragmentShader() {
     return QStringLiteral("#version 330 core\n") + SpeedColormap::glslFunction() +
-           QString::fromLatin1(kFragmentShaderMain);
+           SphereSprite::fragmentFunctions() + QString::fromLatin1(kFragmentShaderMain);
 }
 
 } // namespace
@@ -96,8 +95,7 @@ float ParticleDrawable::effectiveSpeedScale() const {
 }
 
 void ParticleDrawable::initialize() {
-    program_ =
-        ShaderSources{"particles", kParticleVertexShader, QString(), fragmentShader()}.build();
+    program_ = ShaderSources{"particles", vertexShader(), QString(), fragmentShader()}.build();
     vertexArray_.create();
     buffer_.create();
     buffer_.setUsagePattern(QOpenGLBuffer::DynamicDraw);

@@ -4,6 +4,7 @@
 #include "viewport/QtVectors.h"
 #include "viewport/RenderContext.h"
 #include "viewport/ShaderSources.h"
+#include "viewport/SphereSprite.h"
 
 #include <QOpenGLContext>
 #include <QOpenGLExtraFunctions>
@@ -14,8 +15,7 @@ namespace airtrap {
 
 namespace {
 
-// The point covers the sphere's projected diameter, 2 r × (pixels per metre at depth w).
-const char* const kSubgridVertexShader = R"(#version 330 core
+const char* const kSubgridVertexShaderMain = R"(
 layout(location = 0) in vec3 centre;
 layout(location = 1) in float radius;
 uniform mat4 view;
@@ -29,13 +29,14 @@ void main() {
     eyeCentre = eye.xyz;
     eyeRadius = radius;
     gl_Position = projection * eye;
-    gl_PointSize = max(radius * projection[1][1] * viewportHeight / gl_Position.w, minimumPixels);
+    gl_PointSize =
+        max(sphereSpritePixels(radius, projection, viewportHeight, gl_Position.w), minimumPixels);
 }
 )";
 
-// The trapped bubbles' glassy look on a sphere read off the point's disc; its depth is the
-// sphere's surface, so points sort with the water and the bodies around them.
-const char* const kSubgridFragmentShader = R"(#version 330 core
+// The trapped bubbles' glassy look on the point's sphere, at the sphere's depth, so points sort
+// with the water and the bodies around them.
+const char* const kSubgridFragmentShaderMain = R"(
 uniform mat4 projection;
 uniform vec3 colour;
 in vec3 eyeCentre;
@@ -43,23 +44,20 @@ in float eyeRadius;
 out vec4 fragColour;
 const vec3 lightDirection = normalize(vec3(-0.35, 0.55, 0.75));
 void main() {
-    vec2 disc = gl_PointCoord * 2.0 - 1.0;
-    disc.y = -disc.y; // gl_PointCoord grows downwards
-    float r2 = dot(disc, disc);
-    if (r2 > 1.0) {
-        discard;
-    }
-    vec3 n = vec3(disc, sqrt(1.0 - r2));
+    vec3 n = sphereSpriteNormal();
     float rim = pow(1.0 - n.z, 3.0);
     float diffuse = max(dot(n, lightDirection), 0.0);
     vec3 halfway = normalize(lightDirection + vec3(0.0, 0.0, 1.0));
     float specular = 0.35 * pow(max(dot(n, halfway), 0.0), 128.0);
     vec3 shaded = colour * (0.6 + 0.4 * diffuse);
     fragColour = vec4(mix(shaded, vec3(1.0), 0.6 * rim) + vec3(specular), 1.0);
-    vec4 surface = projection * vec4(eyeCentre + n * eyeRadius, 1.0);
-    gl_FragDepth = 0.5 * surface.z / surface.w + 0.5;
+    gl_FragDepth = sphereSpriteDepth(projection, eyeCentre, n, eyeRadius);
 }
 )";
+
+QString withVersion(const QString& functions, const char* main) {
+    return QStringLiteral("#version 330 core\n") + functions + QString::fromLatin1(main);
+}
 
 } // namespace
 
@@ -79,7 +77,10 @@ void SubgridBubbleDrawable::setBubbles(const std::vector<SubgridBubble>& bubbles
 
 void SubgridBubbleDrawable::initialize() {
     program_ =
-        ShaderSources{"sub-grid bubbles", kSubgridVertexShader, QString(), kSubgridFragmentShader}
+        ShaderSources{"sub-grid bubbles",
+                      withVersion(SphereSprite::vertexFunctions(), kSubgridVertexShaderMain),
+                      QString(),
+                      withVersion(SphereSprite::fragmentFunctions(), kSubgridFragmentShaderMain)}
             .build();
     vertexArray_.create();
     buffer_.create();
