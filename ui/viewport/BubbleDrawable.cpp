@@ -42,20 +42,24 @@ void main() {
 
 // Lit from the upper left of the view like the water; the rim fades towards white and a sharp
 // small highlight sits on top, so the sphere reads as a glassy shell rather than a solid ball.
-const char* const kBubbleFragmentShader = R"(#version 330 core
-uniform vec3 colour;
-in vec3 eyePosition;
-in vec3 eyeNormal;
-out vec4 fragColour;
+const char* const kBubbleShading = R"(
 const vec3 lightDirection = normalize(vec3(-0.35, 0.55, 0.75));
-void main() {
-    vec3 n = normalize(eyeNormal);
-    vec3 toEye = normalize(-eyePosition);
+vec3 bubbleShade(vec3 n, vec3 toEye, vec3 colour) {
     float rim = pow(1.0 - max(dot(n, toEye), 0.0), 3.0);
     float diffuse = max(dot(n, lightDirection), 0.0);
     float specular = 0.35 * pow(max(dot(n, normalize(lightDirection + toEye)), 0.0), 128.0);
     vec3 shaded = colour * (0.6 + 0.4 * diffuse);
-    fragColour = vec4(mix(shaded, vec3(1.0), 0.6 * rim) + vec3(specular), 1.0);
+    return mix(shaded, vec3(1.0), 0.6 * rim) + vec3(specular);
+}
+)";
+
+const char* const kBubbleFragmentShaderMain = R"(
+uniform vec3 colour;
+in vec3 eyePosition;
+in vec3 eyeNormal;
+out vec4 fragColour;
+void main() {
+    fragColour = vec4(bubbleShade(normalize(eyeNormal), normalize(-eyePosition), colour), 1.0);
 }
 )";
 
@@ -68,6 +72,10 @@ BubbleDrawable::~BubbleDrawable() = default;
 
 QColor BubbleDrawable::colour() {
     return kBubbleColour;
+}
+
+QString BubbleDrawable::glslShading() {
+    return QString::fromLatin1(kBubbleShading);
 }
 
 void BubbleDrawable::setShape(const BubbleMeshSettings& settings) {
@@ -89,8 +97,10 @@ void BubbleDrawable::setBubbles(const std::vector<BubbleState>& bubbles) {
 }
 
 void BubbleDrawable::initialize() {
-    program_ =
-        ShaderSources{"bubbles", kBubbleVertexShader, QString(), kBubbleFragmentShader}.build();
+    program_ = ShaderSources{"bubbles", kBubbleVertexShader, QString(),
+                             QStringLiteral("#version 330 core\n") + glslShading() +
+                                 QString::fromLatin1(kBubbleFragmentShaderMain)}
+                   .build();
     vertexArray_.create();
     sphereBuffer_.create();
     sphereBuffer_.setUsagePattern(QOpenGLBuffer::StaticDraw);

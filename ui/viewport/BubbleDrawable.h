@@ -13,6 +13,7 @@
 #include <QOpenGLBuffer>
 #include <QOpenGLShaderProgram>
 #include <QOpenGLVertexArrayObject>
+#include <QString>
 #include <QVector4D>
 #include <memory>
 #include <vector>
@@ -34,6 +35,9 @@ public:
 
     //! The bubbles' colour before shading (the sub-grid bubbles' too).
     static QColor colour();
+    //! GLSL source of `vec3 bubbleShade(vec3 normal, vec3 toEye, vec3 colour)`, the bubbles'
+    //! glassy look, for every shader that draws bubbles.
+    static QString glslShading();
 
     //! Builds the shader, the sphere and the instance buffer.
     void initialize() override;

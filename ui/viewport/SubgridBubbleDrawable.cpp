@@ -42,15 +42,10 @@ uniform vec3 colour;
 in vec3 eyeCentre;
 in float eyeRadius;
 out vec4 fragColour;
-const vec3 lightDirection = normalize(vec3(-0.35, 0.55, 0.75));
 void main() {
     vec3 n = sphereSpriteNormal();
-    float rim = pow(1.0 - n.z, 3.0);
-    float diffuse = max(dot(n, lightDirection), 0.0);
-    vec3 halfway = normalize(lightDirection + vec3(0.0, 0.0, 1.0));
-    float specular = 0.35 * pow(max(dot(n, halfway), 0.0), 128.0);
-    vec3 shaded = colour * (0.6 + 0.4 * diffuse);
-    fragColour = vec4(mix(shaded, vec3(1.0), 0.6 * rim) + vec3(specular), 1.0);
+    // Seen along the view axis: a point is small enough for the parallel view to hold.
+    fragColour = vec4(bubbleShade(n, vec3(0.0, 0.0, 1.0), colour), 1.0);
     gl_FragDepth = sphereSpriteDepth(projection, eyeCentre, n, eyeRadius);
 }
 )";
@@ -80,7 +75,8 @@ void SubgridBubbleDrawable::initialize() {
         ShaderSources{"sub-grid bubbles",
                       withVersion(SphereSprite::vertexFunctions(), kSubgridVertexShaderMain),
                       QString(),
-                      withVersion(SphereSprite::fragmentFunctions(), kSubgridFragmentShaderMain)}
+                      withVersion(SphereSprite::fragmentFunctions() + BubbleDrawable::glslShading(),
+                                  kSubgridFragmentShaderMain)}
             .build();
     vertexArray_.create();
     buffer_.create();
