@@ -10,11 +10,12 @@ namespace airtrap {
 class StepPhases {
 public:
     //! Bodies: placing moving bodies' boundary particles (bubbles' too), marking the water near
-    //! them, the water's reaction on dynamic bodies, their contacts and motion; the motion runs
-    //! beside Integrate, so the two overlap in time. BubbleForces: measuring the water around each
-    //! bubble for its drag, steering and deletion rules (applying them is a few operations per
-    //! bubble, inside Bodies). BubblePockets: finding air pockets and creating bubbles, once per
-    //! frame. BubbleDeletion: the deletion rules, after every step.
+    //! them, the water's reaction on dynamic bodies, their contacts and motion; the placing runs
+    //! beside Neighbours and the motion beside Integrate, so those pairs overlap in time.
+    //! BubbleForces: measuring the water around each bubble for its drag, steering and deletion
+    //! rules, beside Forces (applying them is a few operations per bubble, inside Bodies).
+    //! BubblePockets: finding air pockets and creating bubbles, every bubbles.pocket_interval
+    //! steps. BubbleDeletion: the deletion rules, after every step.
     enum Phase {
         Neighbours,
         Density,

@@ -91,15 +91,7 @@ float WcsphSolver::densityForPressure(double pressure) const {
 StepReport WcsphSolver::step(SimulationState& state, double timeToFrameEnd) {
     StepReport report;
     ParticleSet& fluid = state.fluid;
-    {
-        StepPhases::Scope scope(phases_, StepPhases::Neighbours);
-        sortByCell(fluid, report);
-    }
-    // Bodies of bubbles deleted since the last step must leave too.
-    if (anyBodyMoves_ || !state.bubbles.empty() || bodies_.size() != firstBubble_) {
-        StepPhases::Scope scope(phases_, StepPhases::Bodies);
-        placeBodies(state);
-    }
+    sortWaterAndPlaceBodies(state, report);
     if (boundary_.movingLayer().size() > 0) {
         StepPhases::Scope scope(phases_, StepPhases::Bodies);
         boundary_.markWaterNearMovingLayer(grid_, sortedPositions_, kernel_.supportRadius());
@@ -115,49 +107,82 @@ StepReport WcsphSolver::step(SimulationState& state, double timeToFrameEnd) {
         passes_.densityRates(inputs, densityRates_, neighbors_);
         report.maxDensityDeviation = advanceDensities(fluid, report.timeStep);
     }
-    {
-        StepPhases::Scope scope(phases_, StepPhases::Forces);
-        accelerations_.resize(fluid.size());
-        const bool recordContacts = boundary_.hasDynamicBodies();
-        if (recordContacts)
-            contacts_.resize(fluid.size());
-        report.maxAcceleration =
-            passes_.accelerations(inputs, neighbors_, pressureOverDensity2_, report.timeStep,
-                                  accelerations_, recordContacts ? &contacts_ : nullptr);
-    }
-    if (bubbles_ && !state.bubbles.empty()) {
-        StepPhases::Scope scope(phases_, StepPhases::BubbleForces);
-        bubbles_->measureSurroundings(bodies_, firstBubble_, fluid, sortedPositions_, grid_);
-    }
-    bool bodiesFinite = true;
-    bool waterFinite = true;
-    if (boundary_.hasDynamicBodies()) {
-        {
-            StepPhases::Scope scope(phases_, StepPhases::Bodies);
-            passes_.bodyReactions(inputs, pressureOverDensity2_, contacts_, report.timeStep,
-                                  reactions_);
-        }
-        // The bodies move on their reactions alone and the water on its accelerations alone: the
-        // serial rigid-body step runs beside the water's parallel update instead of leaving the
-        // other threads idle. Their phase times overlap.
-        tbb::parallel_invoke(
-            [&] {
-                StepPhases::Scope scope(phases_, StepPhases::Bodies);
-                bodiesFinite = moveDynamicBodies(state, report.timeStep);
-            },
-            [&] {
-                StepPhases::Scope scope(phases_, StepPhases::Integrate);
-                waterFinite = !integrate(fluid, report.timeStep);
-            });
-    } else {
-        StepPhases::Scope scope(phases_, StepPhases::Integrate);
-        waterFinite = !integrate(fluid, report.timeStep);
-    }
-    report.nonFinite = !bodiesFinite || !waterFinite;
+    computeForcesAndMeasureBubbles(state, inputs, report);
+    report.nonFinite = !moveBodiesAndWater(state, inputs, report.timeStep);
     state.lastMaxAcceleration = report.maxAcceleration;
     state.lastTimeStep = report.timeStep;
     ++state.steps;
     return report;
+}
+
+void WcsphSolver::sortWaterAndPlaceBodies(SimulationState& state, StepReport& report) {
+    const auto sortWater = [&] {
+        StepPhases::Scope scope(phases_, StepPhases::Neighbours);
+        sortByCell(state.fluid, report);
+    };
+    // Bodies of bubbles deleted since the last step must leave too.
+    if (!anyBodyMoves_ && state.bubbles.empty() && bodies_.size() == firstBubble_) {
+        sortWater();
+        return;
+    }
+    // The water's sort and the bodies' placing share no data. Side by side, the short serial
+    // parts of the placing fill the sort's gaps instead of keeping the other thread waiting.
+    tbb::parallel_invoke(sortWater, [&] {
+        StepPhases::Scope scope(phases_, StepPhases::Bodies);
+        placeBodies(state);
+    });
+}
+
+void WcsphSolver::computeForcesAndMeasureBubbles(const SimulationState& state,
+                                                 const InteractionInputs& inputs,
+                                                 StepReport& report) {
+    const auto forces = [&] {
+        StepPhases::Scope scope(phases_, StepPhases::Forces);
+        accelerations_.resize(inputs.fluid.size());
+        const bool recordContacts = boundary_.hasDynamicBodies();
+        if (recordContacts)
+            contacts_.resize(inputs.fluid.size());
+        report.maxAcceleration =
+            passes_.accelerations(inputs, neighbors_, pressureOverDensity2_, report.timeStep,
+                                  accelerations_, recordContacts ? &contacts_ : nullptr);
+    };
+    if (!bubbles_ || state.bubbles.empty()) {
+        forces();
+        return;
+    }
+    // Both only read the water; the bubbles' few tasks join the force pass's instead of
+    // waiting for it to end.
+    tbb::parallel_invoke(forces, [&] {
+        StepPhases::Scope scope(phases_, StepPhases::BubbleForces);
+        bubbles_->measureSurroundings(bodies_, firstBubble_, inputs.fluid, sortedPositions_, grid_);
+    });
+}
+
+bool WcsphSolver::moveBodiesAndWater(SimulationState& state, const InteractionInputs& inputs,
+                                     double dt) {
+    if (!boundary_.hasDynamicBodies()) {
+        StepPhases::Scope scope(phases_, StepPhases::Integrate);
+        return !integrate(state.fluid, dt);
+    }
+    {
+        StepPhases::Scope scope(phases_, StepPhases::Bodies);
+        passes_.bodyReactions(inputs, pressureOverDensity2_, contacts_, dt, reactions_);
+    }
+    bool bodiesFinite = true;
+    bool waterFinite = true;
+    // The bodies move on their reactions alone and the water on its accelerations alone: the
+    // serial rigid-body step runs beside the water's parallel update instead of leaving the
+    // other threads idle. Their phase times overlap.
+    tbb::parallel_invoke(
+        [&] {
+            StepPhases::Scope scope(phases_, StepPhases::Bodies);
+            bodiesFinite = moveDynamicBodies(state, dt);
+        },
+        [&] {
+            StepPhases::Scope scope(phases_, StepPhases::Integrate);
+            waterFinite = !integrate(state.fluid, dt);
+        });
+    return bodiesFinite && waterFinite;
 }
 
 void WcsphSolver::followPaths(SimulationState& state) {

@@ -82,6 +82,15 @@ private:
     InteractionConstants interactionConstants() const;
     //! v ← v + Δt a, x ← x + Δt v; returns whether a NaN or infinity appeared.
     bool integrate(ParticleSet& fluid, double dt);
+    //! The water sorted by cell and, beside it, the bodies placed when any of them moves or
+    //! bubbles exist or have just been deleted.
+    void sortWaterAndPlaceBodies(SimulationState& state, StepReport& report);
+    //! The force pass and, beside it, the water around each bubble (BubbleDynamics).
+    void computeForcesAndMeasureBubbles(const SimulationState& state,
+                                        const InteractionInputs& inputs, StepReport& report);
+    //! The bodies' reactions and motion and the water's integration; false when either is no
+    //! longer finite.
+    bool moveBodiesAndWater(SimulationState& state, const InteractionInputs& inputs, double dt);
     //! Copies the state's bodies into bodies_ (kinematic ones on their paths), makes the
     //! bubbles' bodies follow the state's bubbles, and places their boundary particles.
     void placeBodies(SimulationState& state);
