@@ -4,14 +4,13 @@
 
 namespace airtrap {
 
-void BubbleDeletion::afterStep(std::vector<BubbleState>& bubbles,
-                               const std::vector<BubbleSurroundings>& surroundings, double dt,
+void BubbleDeletion::afterStep(std::vector<BubbleState>& bubbles, double dt,
                                BubbleTally& tally) const {
-    const bool measured = surroundings.size() == bubbles.size();
     std::vector<BubbleTally::Rule> verdicts(bubbles.size(), BubbleTally::RuleCount);
     for (std::size_t k = 0; k < bubbles.size(); ++k) {
         BubbleState& bubble = bubbles[k];
-        const BubbleSurroundings* around = measured ? &surroundings[k] : nullptr;
+        const BubbleSurroundings* around =
+            bubble.surroundings.measured ? &bubble.surroundings : nullptr;
         // Water landing on a floating bubble covers it in the step it hits: the bubble was
         // floating if it floated up to this step.
         const bool wasFloating = bubble.floatingTime > 0.0 || (around && around->floating);

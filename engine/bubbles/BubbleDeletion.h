@@ -17,11 +17,9 @@ class BubbleDeletion {
 public:
     explicit BubbleDeletion(const BubbleSettings& settings) : settings_(settings) {}
 
-    //! Ages the bubbles by `dt` s, updates their floating time from `surroundings` (one per
-    //! bubble, as the step measured them; may be empty) and deletes those a rule condemns.
-    void afterStep(std::vector<BubbleState>& bubbles,
-                   const std::vector<BubbleSurroundings>& surroundings, double dt,
-                   BubbleTally& tally) const;
+    //! Ages the bubbles by `dt` s, updates their floating time from their surroundings as last
+    //! measured and deletes those a rule condemns.
+    void afterStep(std::vector<BubbleState>& bubbles, double dt, BubbleTally& tally) const;
 
 private:
     //! The rule that deletes `bubble`, or RuleCount when none does (overlap aside).

@@ -95,13 +95,24 @@ double BubbleDynamics::riseSpeed(double radius) const {
     return std::min(stokes, settings_.maxRiseSpeed);
 }
 
-void BubbleDynamics::measureSurroundings(const std::vector<RigidBody>& bodies, std::size_t first,
+bool BubbleDynamics::measureDue(std::uint64_t step, const std::vector<BubbleState>& bubbles) {
+    if (bubbles.empty())
+        return false;
+    return step % kMeasureInterval == 0 ||
+           std::any_of(bubbles.begin(), bubbles.end(),
+                       [](const BubbleState& bubble) { return !bubble.surroundings.measured; });
+}
+
+void BubbleDynamics::measureSurroundings(std::uint64_t step, const std::vector<RigidBody>& bodies,
+                                         std::size_t first, std::vector<BubbleState>& bubbles,
                                          const ParticleSet& fluid, const PositionArrays& positions,
-                                         const NeighborGrid& grid) {
-    surroundings_.resize(bodyIds_.size());
+                                         const NeighborGrid& grid) const {
+    const bool everyBubble = step % kMeasureInterval == 0;
     // Each bubble writes only its own entry: parallel, and the same bits on any thread count.
-    tbb::parallel_for(std::size_t(0), bodyIds_.size(), [&](std::size_t k) {
-        surroundings_[k] = measureOne(bodies[first + k], radii_[k], fluid, positions, grid);
+    tbb::parallel_for(std::size_t(0), bubbles.size(), [&](std::size_t k) {
+        BubbleSurroundings& around = bubbles[k].surroundings;
+        if (everyBubble || !around.measured)
+            around = measureOne(bodies[first + k], radii_[k], fluid, positions, grid);
     });
 }
 
@@ -124,6 +135,7 @@ BubbleSurroundings BubbleDynamics::measureOne(const RigidBody& body, double radi
     std::size_t ambientCount = 0;
     Vec3d ambientSum = Vec3d::Zero();
     BubbleSurroundings result;
+    result.measured = true;
     grid.forEachRangeInBall(
         centre, radius + 2.0 * support_, [&](std::uint32_t begin, std::uint32_t end) {
             // Branch-free over the shell, which holds about half of the candidates in no
@@ -167,7 +179,7 @@ void BubbleDynamics::applyForces(std::vector<RigidBody>& bodies, std::size_t fir
     const Vec3d up = steer ? Vec3d(-gravity_.normalized()) : Vec3d::UnitY();
     for (std::size_t k = 0; k < bodyIds_.size(); ++k) {
         RigidBody& body = bodies[first + k];
-        const BubbleSurroundings& around = surroundings_.at(k);
+        const BubbleSurroundings& around = start.at(k).surroundings;
         RigidBodyState state = body.state();
         const double radius = radii_[k];
         const double stokesDrag = 6.0 * kPi * restDensity_ * settings_.kinematicViscosity * radius;

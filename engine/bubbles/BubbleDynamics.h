@@ -36,14 +36,25 @@ public:
     void syncBodies(std::vector<RigidBody>& bodies, std::size_t first,
                     const std::vector<BubbleState>& bubbles);
 
-    //! Measures the water around each bubble body from the step's sorted water.
-    void measureSurroundings(const std::vector<RigidBody>& bodies, std::size_t first,
+    //! Steps between two measures of a bubble's surroundings. The measure reads every water
+    //! particle within two support radii of the bubble, several hundred per bubble, and was the
+    //! largest part of the bubbles' cost when taken every step; what it measures changes slowly:
+    //! under the time-step limit (c = 10 u_max, CFL 0.4) the water moves less than a tenth of a
+    //! support radius in these steps, and an impact on a floating bubble lasts far longer.
+    static constexpr std::uint64_t kMeasureInterval = 5;
+
+    //! Whether the step numbered `step` (SimulationState::steps) has surroundings to measure:
+    //! every bubble's on every kMeasureInterval-th step, a new bubble's on its first.
+    static bool measureDue(std::uint64_t step, const std::vector<BubbleState>& bubbles);
+    //! Measures the water around the bubbles due at step `step` from the step's sorted water,
+    //! into their BubbleState::surroundings.
+    void measureSurroundings(std::uint64_t step, const std::vector<RigidBody>& bodies,
+                             std::size_t first, std::vector<BubbleState>& bubbles,
                              const ParticleSet& fluid, const PositionArrays& positions,
-                             const NeighborGrid& grid);
-    const std::vector<BubbleSurroundings>& surroundings() const { return surroundings_; }
+                             const NeighborGrid& grid) const;
 
     //! Drag and steering, once the water's force and gravity have changed the bodies' velocities
-    //! for a step of `dt` s; `start` holds the bubbles as the step began.
+    //! for a step of `dt` s; `start` holds the bubbles as the step began, with their surroundings.
     void applyForces(std::vector<RigidBody>& bodies, std::size_t first,
                      const std::vector<BubbleState>& start, double dt) const;
     //! The impulses between touching bubbles.
@@ -72,7 +83,6 @@ private:
     BubblePairImpulse pairs_;
     std::vector<std::uint32_t> bodyIds_; //!< id of the bubble of each body from `first` on
     std::vector<double> radii_;
-    std::vector<BubbleSurroundings> surroundings_;
 };
 
 } // namespace airtrap

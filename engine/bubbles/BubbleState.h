@@ -1,6 +1,8 @@
 #pragma once
-// What the frame cache keeps of a trapped air bubble (chunk BUBL, docs/CACHE_FORMAT.md): enough
-// to continue a bake bit for bit and to render the bubble (paper §3.2–3.4, §4).
+// What the frame cache keeps of a trapped air bubble (chunks BUBL and BSUR,
+// docs/CACHE_FORMAT.md): enough to continue a bake bit for bit and to render the bubble (paper
+// §3.2–3.4, §4).
+#include "bubbles/BubbleSurroundings.h"
 #include "rigid/RigidBodyState.h"
 
 #include <cstdint>
@@ -16,6 +18,7 @@ struct BubbleState {
     double floatingTime = 0.0;        //!< s spent at the free surface without a break
     double areaFractionInWater = 1.0; //!< share of its surface in water at creation (sub-grid)
     double pocketVolume = 0.0;        //!< m³ of the air pocket it was made from (sub-grid)
+    BubbleSurroundings surroundings;  //!< the water around it, as last measured (chunk BSUR)
 
     bool operator==(const BubbleState& other) const = default;
 };

@@ -1,6 +1,8 @@
 #pragma once
-// What the water around a bubble looks like this step, measured over the water particles within
-// two support radii of its surface.
+// What the water around a bubble looked like when it was last measured, over the water
+// particles within two support radii of its surface. Measured every few steps
+// (BubbleDynamics::kMeasureInterval) and kept in the cache with the bubble, so that a resumed
+// bake holds the same measure as one that ran on.
 #include "core/Math.h"
 
 namespace airtrap {
@@ -16,6 +18,11 @@ struct BubbleSurroundings {
     double wettedShare = 0.0;
     //! The water does not cover its top: the bubble floats at the free surface.
     bool floating = false;
+    //! False until the bubble's first measure: a new bubble, or one read from a frame written
+    //! before the surroundings were cached.
+    bool measured = false;
+
+    bool operator==(const BubbleSurroundings& other) const = default;
 };
 
 } // namespace airtrap

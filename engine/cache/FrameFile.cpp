@@ -1,6 +1,7 @@
 #include "cache/FrameFile.h"
 
 #include "cache/BubbleChunk.h"
+#include "cache/BubbleSurroundingsChunk.h"
 #include "cache/ByteReader.h"
 #include "cache/ByteWriter.h"
 #include "cache/RigidBodyRecord.h"
@@ -96,6 +97,13 @@ void writeBodyChunk(ByteWriter& out, const std::vector<RigidBodyState>& bodies) 
 void writeBubbleChunk(ByteWriter& out, const SimulationState& state, const FrameStats& stats) {
     const std::size_t at = beginChunk(out, BubbleChunk::kTag);
     BubbleChunk::write(out, state.bubbles, state.nextBubbleId, state.bubblesDeleted, stats.bubbles);
+    endChunk(out, at);
+}
+
+//! Written with BUBL whenever bubbles are alive.
+void writeBubbleSurroundingsChunk(ByteWriter& out, const std::vector<BubbleState>& bubbles) {
+    const std::size_t at = beginChunk(out, BubbleSurroundingsChunk::kTag);
+    BubbleSurroundingsChunk::write(out, bubbles);
     endChunk(out, at);
 }
 
@@ -314,6 +322,7 @@ void readChunks(const std::vector<Chunk>& chunks, FrameData& frame, const std::s
     int statsChunks = 0;
     int bodyChunks = 0;
     int bubbleChunks = 0;
+    const Chunk* surroundings = nullptr;
     for (const Chunk& chunk : chunks) {
         if (chunk.tag == kStateTag) {
             particleCount = readStateChunk(chunk, frame.state, path);
@@ -333,8 +342,16 @@ void readChunks(const std::vector<Chunk>& chunks, FrameData& frame, const std::s
             BubbleChunk::read(chunk.data, chunk.size, path,
                               {frame.state.bubbles, frame.state.nextBubbleId,
                                frame.state.bubblesDeleted, frame.stats.bubbles});
+        } else if (chunk.tag == BubbleSurroundingsChunk::kTag) {
+            if (surroundings)
+                corruptFrame(path, "more than one BSUR chunk");
+            surroundings = &chunk;
         }
     }
+    // After the loop: the surroundings belong to the bubbles of BUBL, wherever it stands.
+    if (surroundings)
+        BubbleSurroundingsChunk::read(surroundings->data, surroundings->size, path,
+                                      frame.state.bubbles);
     if (stateChunks != 1 || statsChunks != 1)
         corruptFrame(path, "expected one STAT and one FSTA chunk, found " +
                                std::to_string(stateChunks) + " and " + std::to_string(statsChunks));
@@ -362,8 +379,9 @@ std::vector<std::uint8_t> encodeFrame(const SimulationState& state, const FrameS
     // attributes() only hands out pointers; it is non-const because writers use the same views.
     auto& fluid = const_cast<ParticleSet&>(state.fluid);
     const std::vector<ParticleAttribute> attributes = fluid.attributes();
-    std::size_t estimate = kFrameHeaderSize + 1024 + state.bodies.size() * kBodyRecordSize +
-                           state.bubbles.size() * BubbleChunk::kRecordSize;
+    std::size_t estimate =
+        kFrameHeaderSize + 1024 + state.bodies.size() * kBodyRecordSize +
+        state.bubbles.size() * (BubbleChunk::kRecordSize + BubbleSurroundingsChunk::kRecordSize);
     for (const ParticleAttribute& attribute : attributes)
         estimate += kChunkHeaderSize + 64 + fluid.size() * attributeElementSize(attribute.type);
     std::vector<std::uint8_t> bytes(kFrameHeaderSize); // header filled once the payload is known
@@ -377,6 +395,8 @@ std::vector<std::uint8_t> encodeFrame(const SimulationState& state, const FrameS
         writeBodyChunk(out, state.bodies);
     if (BubbleChunk::needed(state.bubbles, state.nextBubbleId))
         writeBubbleChunk(out, state, stats);
+    if (!state.bubbles.empty())
+        writeBubbleSurroundingsChunk(out, state.bubbles);
     writeHeader(bytes, state.frame);
     return bytes;
 }

@@ -5,8 +5,8 @@
 #include "sph/WcsphSolver.h"
 
 #include <chrono>
-#include <limits>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
@@ -142,8 +142,7 @@ void Simulation::afterStep(const StepReport& report, double frameEnd) {
     if (bubbleDeletion_ && !state_.bubbles.empty()) {
         StepPhases::Scope scope(solver_->phases(), StepPhases::BubbleDeletion);
         BubbleTally deleted;
-        bubbleDeletion_->afterStep(state_.bubbles, solver_->bubbleSurroundings(),
-                                   report.timeStep, deleted);
+        bubbleDeletion_->afterStep(state_.bubbles, report.timeStep, deleted);
         frameBubbles_ += deleted;
         state_.bubblesDeleted += deleted;
     }

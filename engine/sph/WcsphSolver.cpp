@@ -58,11 +58,6 @@ WcsphSolver::WcsphSolver(const SolverSettings& settings, const Aabb& domain,
     coupling_.setBubblesFrom(firstBubble_);
 }
 
-const std::vector<BubbleSurroundings>& WcsphSolver::bubbleSurroundings() const {
-    static const std::vector<BubbleSurroundings> none;
-    return bubbles_ ? bubbles_->surroundings() : none;
-}
-
 InteractionConstants WcsphSolver::interactionConstants() const {
     const float c = static_cast<float>(speedOfSound_);
     const float h = kernel_.smoothingLength();
@@ -133,7 +128,7 @@ void WcsphSolver::sortWaterAndPlaceBodies(SimulationState& state, StepReport& re
     });
 }
 
-void WcsphSolver::computeForcesAndMeasureBubbles(const SimulationState& state,
+void WcsphSolver::computeForcesAndMeasureBubbles(SimulationState& state,
                                                  const InteractionInputs& inputs,
                                                  StepReport& report) {
     const auto forces = [&] {
@@ -146,7 +141,7 @@ void WcsphSolver::computeForcesAndMeasureBubbles(const SimulationState& state,
             passes_.accelerations(inputs, neighbors_, pressureOverDensity2_, report.timeStep,
                                   accelerations_, recordContacts ? &contacts_ : nullptr);
     };
-    if (!bubbles_ || state.bubbles.empty()) {
+    if (!bubbles_ || !BubbleDynamics::measureDue(state.steps, state.bubbles)) {
         forces();
         return;
     }
@@ -154,7 +149,8 @@ void WcsphSolver::computeForcesAndMeasureBubbles(const SimulationState& state,
     // waiting for it to end.
     tbb::parallel_invoke(forces, [&] {
         StepPhases::Scope scope(phases_, StepPhases::BubbleForces);
-        bubbles_->measureSurroundings(bodies_, firstBubble_, inputs.fluid, sortedPositions_, grid_);
+        bubbles_->measureSurroundings(state.steps, bodies_, firstBubble_, state.bubbles,
+                                      inputs.fluid, sortedPositions_, grid_);
     });
 }
 

@@ -42,10 +42,6 @@ public:
     //! dynamic bodies with the water.
     StepReport step(SimulationState& state, double timeToFrameEnd);
 
-    //! The water around each of the state's bubbles, as the last step measured it (empty without
-    //! bubbles).
-    const std::vector<BubbleSurroundings>& bubbleSurroundings() const;
-
     //! Puts the kinematic bodies of `state` where their paths have them at state.time.
     void followPaths(SimulationState& state);
 
@@ -85,9 +81,10 @@ private:
     //! The water sorted by cell and, beside it, the bodies placed when any of them moves or
     //! bubbles exist or have just been deleted.
     void sortWaterAndPlaceBodies(SimulationState& state, StepReport& report);
-    //! The force pass and, beside it, the water around each bubble (BubbleDynamics).
-    void computeForcesAndMeasureBubbles(const SimulationState& state,
-                                        const InteractionInputs& inputs, StepReport& report);
+    //! The force pass and, beside it, the water around the bubbles due a measure
+    //! (BubbleDynamics).
+    void computeForcesAndMeasureBubbles(SimulationState& state, const InteractionInputs& inputs,
+                                        StepReport& report);
     //! The bodies' reactions and motion and the water's integration; false when either is no
     //! longer finite.
     bool moveBodiesAndWater(SimulationState& state, const InteractionInputs& inputs, double dt);

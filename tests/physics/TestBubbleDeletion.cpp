@@ -77,8 +77,8 @@ private Q_SLOTS:
             test::simulationWithBubbles(scene, {test::bubbleAt(0, Vec3d(0.2, 0.18, 0.2), 0.04)});
         double surfacedAt = -1.0;
         const double at = runUntil(*simulation, 1.5, [&](Simulation& s) {
-            if (surfacedAt < 0.0 && !s.solver().bubbleSurroundings().empty() &&
-                s.solver().bubbleSurroundings()[0].floating)
+            if (surfacedAt < 0.0 && !s.state().bubbles.empty() &&
+                s.state().bubbles[0].surroundings.floating)
                 surfacedAt = s.state().time;
             return s.state().bubbles.empty();
         });

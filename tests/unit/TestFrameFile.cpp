@@ -58,6 +58,11 @@ std::vector<BubbleState> twoBubbles() {
     bubbles[1].radius = 0.03;
     bubbles[1].body.linearVelocity = Vec3d(-0.0, std::numeric_limits<double>::denorm_min(), 0.2);
     bubbles[1].floatingTime = 1.0 / 3.0;
+    bubbles[1].surroundings.waterVelocity = Vec3d(0.1, -0.0, 1.0 / 7.0);
+    bubbles[1].surroundings.impactSpeed = 0.75;
+    bubbles[1].surroundings.wettedShare = 5.0 / 14.0;
+    bubbles[1].surroundings.floating = true;
+    bubbles[1].surroundings.measured = true;
     return bubbles;
 }
 
@@ -98,6 +103,27 @@ std::size_t lastChunkOffset(const std::vector<std::uint8_t>& bytes) {
         at += 12 + length;
     }
     return last;
+}
+
+//! Offset of the first chunk tagged `tag`.
+std::size_t chunkOffset(const std::vector<std::uint8_t>& bytes, const char* tag) {
+    std::size_t at = kFrameHeaderSize;
+    while (at < bytes.size() && std::memcmp(bytes.data() + at, tag, 4) != 0) {
+        std::uint64_t length = 0;
+        std::memcpy(&length, bytes.data() + at + 4, 8);
+        at += 12 + length;
+    }
+    return at;
+}
+
+//! `bytes` without the chunk at `at`, as a frame written before that chunk existed.
+std::vector<std::uint8_t> withoutChunk(std::vector<std::uint8_t> bytes, std::size_t at) {
+    std::uint64_t length = 0;
+    std::memcpy(&length, bytes.data() + at + 4, 8);
+    bytes.erase(bytes.begin() + std::ptrdiff_t(at),
+                bytes.begin() + std::ptrdiff_t(at + 12 + length));
+    resealFrame(bytes);
+    return bytes;
 }
 
 QString corruptMessage(const std::vector<std::uint8_t>& bytes) {
@@ -331,22 +357,61 @@ private Q_SLOTS:
         QCOMPARE(decoded.state.nextBubbleId, 17u);
         QVERIFY(std::signbit(decoded.state.bubbles[1].body.linearVelocity.x()));
         QVERIFY(encodeFrame(decoded.state, decoded.stats) == bytes);
-        // BUBL follows BODY: 80 bytes of count, next id and tallies, then 152 per bubble.
-        const std::size_t at = lastChunkOffset(bytes);
-        QCOMPARE(std::memcmp(bytes.data() + at, "BUBL", 4), 0);
+        // BUBL follows BODY: 80 bytes of count, next id and tallies, then 152 per bubble; BSUR
+        // comes last: a count, then 42 bytes per bubble.
+        const std::size_t at = chunkOffset(bytes, "BUBL");
+        QVERIFY(at < bytes.size());
         std::uint64_t length = 0;
         std::memcpy(&length, bytes.data() + at + 4, 8);
         QCOMPARE(length, std::uint64_t(80 + 2 * 152));
+        const std::size_t surroundingsAt = lastChunkOffset(bytes);
+        QCOMPARE(std::memcmp(bytes.data() + surroundingsAt, "BSUR", 4), 0);
+        std::memcpy(&length, bytes.data() + surroundingsAt + 4, 8);
+        QCOMPARE(length, std::uint64_t(4 + 2 * 42));
+        QVERIFY(std::signbit(decoded.state.bubbles[1].surroundings.waterVelocity.y()));
+    }
+
+    void framesWithoutSurroundingsReadAsUnmeasured() {
+        SimulationState state = randomState(9, 4, 3);
+        state.bubbles = twoBubbles();
+        const std::vector<std::uint8_t> bytes = encodeFrame(state, FrameStats{});
+        const FrameData older = decodeFrame(withoutChunk(bytes, lastChunkOffset(bytes)), kPath);
+        QCOMPARE(older.state.bubbles.size(), std::size_t(2));
+        QVERIFY(!older.state.bubbles[1].surroundings.measured);
+        QCOMPARE(older.state.bubbles[1].radius, 0.03);
     }
 
     void corruptBubbleChunkDetected() {
         SimulationState state = randomState(9, 4, 3);
         state.bubbles = twoBubbles();
         std::vector<std::uint8_t> bytes = encodeFrame(state, FrameStats{});
-        put<std::uint32_t>(bytes, lastChunkOffset(bytes) + 12, 3); // count says 3, holds 2
+        put<std::uint32_t>(bytes, chunkOffset(bytes, "BUBL") + 12, 3); // count says 3, holds 2
         resealFrame(bytes);
         const QString message = corruptMessage(bytes);
         QVERIFY2(message.contains("chunk BUBL is 384 bytes, expected 536 for 3 bubbles"),
+                 qPrintable(message));
+    }
+
+    void corruptSurroundingsChunkDetected() {
+        SimulationState state = randomState(9, 4, 3);
+        state.bubbles = twoBubbles();
+        std::vector<std::uint8_t> bytes = encodeFrame(state, FrameStats{});
+        put<std::uint32_t>(bytes, lastChunkOffset(bytes) + 12, 3); // count says 3, holds 2
+        resealFrame(bytes);
+        QString message = corruptMessage(bytes);
+        QVERIFY2(message.contains("chunk BSUR is 88 bytes, expected 130 for 3 bubbles"),
+                 qPrintable(message));
+        // A whole chunk for one bubble fewer than BUBL holds does not pass either.
+        state.bubbles.pop_back();
+        const std::vector<std::uint8_t> oneBubble = encodeFrame(state, FrameStats{});
+        const std::size_t at = lastChunkOffset(oneBubble);
+        state.bubbles = twoBubbles();
+        std::vector<std::uint8_t> mixed = encodeFrame(state, FrameStats{});
+        mixed = withoutChunk(mixed, lastChunkOffset(mixed));
+        mixed.insert(mixed.end(), oneBubble.begin() + std::ptrdiff_t(at), oneBubble.end());
+        resealFrame(mixed);
+        message = corruptMessage(mixed);
+        QVERIFY2(message.contains("chunk BSUR describes 1 bubbles but chunk BUBL holds 2"),
                  qPrintable(message));
     }
 
