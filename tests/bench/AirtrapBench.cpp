@@ -5,10 +5,12 @@
 // it. Then the cost of the trapped air bubbles on samples/pouring.json, twice: as the paper
 // measured it, a whole bake with bubbles against one without; and per step from the moment the jet
 // has trapped the most air, with bubbles on and off (the same water, without the bubbles' bodies,
-// pocket searches and rules). Prints particle-updates per second, neighbours
+// pocket searches and rules): each side's own figures, and the overhead from the two stepped in
+// turn (BubbleStepComparison). Prints particle-updates per second, neighbours
 // per particle, ms per phase and bytes per particle, as a table or (--json) as one JSON array.
 #include "BenchmarkCase.h"
 #include "BubbleBakeComparison.h"
+#include "BubbleStepComparison.h"
 #include "DamBreakScene.h"
 #include "scene/SceneJson.h"
 
@@ -91,23 +93,26 @@ double msPerStep(const BenchmarkResult& r) {
     return 1000.0 * r.wallSeconds / r.steps;
 }
 
-//! The bubble cases of one thread count: each off run followed by its on run, so a slow spell of
-//! the machine falls on both sides of a pair; the overhead is the median over the pairs.
-struct BubbleComparison {
-    BenchmarkResult off;
-    BenchmarkResult on;
-    double overheadPercent = 0.0;
-};
-
-void printBubbleOverhead(const BubbleComparison& pair) {
-    const auto phase = [&](const char* name) { return pair.on.phaseMilliseconds.at(name); };
-    std::printf("  bubbles (%zu alive, %d thr): %.3f vs %.3f ms/step, overhead %+.2f %% (median "
-                "of paired runs); per step pockets %.4f ms, forces %.4f ms, deletion %.4f ms, "
+void printBubbleOverhead(const BubbleStepResult& pair) {
+    const auto on = [&](const char* name) { return pair.phaseMillisecondsOn.at(name); };
+    std::printf("  bubbles (%zu alive, %d thr): %.3f vs %.3f ms/step, overhead %+.2f %% (%d steps "
+                "each, in turn); per step pockets %.4f ms, forces %.4f ms, deletion %.4f ms, "
                 "bodies %.4f vs %.4f ms\n",
-                pair.on.bubbles, pair.on.threads, msPerStep(pair.on), msPerStep(pair.off),
-                pair.overheadPercent, phase("bubble_pockets"), phase("bubble_forces"),
-                phase("bubble_deletion"), phase("bodies"), pair.off.phaseMilliseconds.at("bodies"));
+                pair.bubbles, pair.threads, pair.msPerStepOn, pair.msPerStepOff,
+                pair.overheadPercent(), pair.steps, on("bubble_pockets"), on("bubble_forces"),
+                on("bubble_deletion"), on("bodies"), pair.phaseMillisecondsOff.at("bodies"));
     std::fflush(stdout);
+}
+
+nlohmann::json toJson(const BubbleStepResult& pair) {
+    return {{"threads", pair.threads},
+            {"steps", pair.steps},
+            {"bubbles", pair.bubbles},
+            {"ms_per_step_with_bubbles", pair.msPerStepOn},
+            {"ms_per_step_without_bubbles", pair.msPerStepOff},
+            {"bubble_overhead_percent", pair.overheadPercent()},
+            {"phase_ms_with_bubbles", pair.phaseMillisecondsOn},
+            {"phase_ms_without_bubbles", pair.phaseMillisecondsOff}};
 }
 
 BenchmarkResult median(std::vector<BenchmarkResult> runs) {
@@ -124,19 +129,6 @@ BenchmarkResult medianRun(const BenchmarkCase& benchmark, int threads, int steps
     for (int r = 0; r < repeat; ++r)
         runs.push_back(benchmark.run(threads, steps, warmup));
     return median(std::move(runs));
-}
-
-BubbleComparison comparePaired(const BenchmarkCase& off, const BenchmarkCase& on, int threads,
-                               int steps, int warmup, int repeat) {
-    std::vector<BenchmarkResult> offRuns, onRuns;
-    std::vector<double> overheads;
-    for (int r = 0; r < repeat; ++r) {
-        offRuns.push_back(off.run(threads, steps, warmup));
-        onRuns.push_back(on.run(threads, steps, warmup));
-        overheads.push_back(100.0 * (msPerStep(onRuns.back()) / msPerStep(offRuns.back()) - 1.0));
-    }
-    std::sort(overheads.begin(), overheads.end());
-    return {median(offRuns), median(onRuns), overheads[overheads.size() / 2]};
 }
 
 nlohmann::json toJson(const BenchmarkResult& r) {
@@ -184,6 +176,7 @@ int main(int argc, char** argv) {
     std::vector<double> bubbleSizes = {50000};
     double bubbleWarmup = 1.0;
     int bubbleFrames = 0;
+    int bubbleSteps = 400;
     int steps = 50;
     int warmup = 5;
     int repeat = 3;
@@ -207,6 +200,9 @@ int main(int argc, char** argv) {
                    "Simulated seconds into the bake where the per-step bubble cases start");
     app.add_option("--bubble-frames", bubbleFrames,
                    "Frames of the whole-bake bubble comparison (0: the scene's end frame)");
+    app.add_option("--bubble-steps", bubbleSteps,
+                   "Steps of each side when the per-step bubble cases are stepped in turn")
+        ->check(CLI::PositiveNumber);
     app.add_flag("--json", json, "Print one JSON array instead of a table");
     CLI11_PARSE(app, argc, argv);
 
@@ -234,7 +230,12 @@ int main(int argc, char** argv) {
             }
         }
         nlohmann::json all = nlohmann::json::array();
-        std::vector<std::pair<BenchmarkCase, BenchmarkCase>> bubbleCases;
+        struct BubbleCases {
+            BenchmarkCase off;
+            BenchmarkCase on;
+            BubbleStepComparison inTurn;
+        };
+        std::vector<BubbleCases> bubbleCases;
         if (!bubbleSizes.empty()) {
             const Scene pouring = readSceneFile(bubblePath);
             for (double size : bubbleSizes) {
@@ -252,8 +253,9 @@ int main(int argc, char** argv) {
                                              std::to_string(frames / scene.frames.fps) + " s");
                 auto on = std::make_pair(scene, std::move(*bake.snapshot));
                 auto off = withoutBubbles(on);
-                bubbleCases.emplace_back(BenchmarkCase(name + "_off", off.first, off.second),
-                                         BenchmarkCase(name + "_on", on.first, on.second));
+                bubbleCases.push_back({BenchmarkCase(name + "_off", off.first, off.second),
+                                       BenchmarkCase(name + "_on", on.first, on.second),
+                                       BubbleStepComparison(on.first, on.second)});
             }
         }
         if (!json)
@@ -269,17 +271,13 @@ int main(int argc, char** argv) {
         for (const BenchmarkCase& benchmark : cases)
             for (int t : threads)
                 measure(benchmark, t);
-        for (const auto& [off, on] : bubbleCases)
+        for (const BubbleCases& bubbles : bubbleCases)
             for (int t : threads) {
-                const BubbleComparison pair = comparePaired(off, on, t, steps, warmup, repeat);
-                for (const BenchmarkResult* result : {&pair.off, &pair.on}) {
-                    if (json)
-                        all.push_back(toJson(*result));
-                    else
-                        printTableRow(*result);
-                }
+                measure(bubbles.off, t);
+                measure(bubbles.on, t);
+                const BubbleStepResult pair = bubbles.inTurn.run(t, bubbleSteps, warmup);
                 if (json)
-                    all.back()["bubble_overhead_percent"] = pair.overheadPercent;
+                    all.back()["stepped_in_turn"] = toJson(pair);
                 else
                     printBubbleOverhead(pair);
             }
