@@ -40,7 +40,10 @@ std::vector<AirPocket> AirPocketFinder::find(const NeighborGrid& grid,
     classify(grid, solid);
     floodAtmosphere(grid);
     std::vector<AirPocket> pockets;
-    for (int cell = 0; cell < static_cast<int>(cells_.size()); ++cell)
+    // In index order, so that each pocket starts from its lowest cell, as the order of equal
+    // volumes below requires.
+    std::sort(airCells_.begin(), airCells_.end());
+    for (int cell : airCells_)
         if (cells_[cell] == Cell::Air)
             pockets.push_back(collectPocket(grid, cell));
     // Stable: equal volumes keep the order of their first cells.
@@ -54,6 +57,7 @@ void AirPocketFinder::classify(const NeighborGrid& grid, const std::vector<std::
     // already. Most of the domain is such open sky, so the flood only has to visit the air under
     // water or solids (one sequential pass here instead of a queue through every air cell).
     cells_.assign(grid.cellTotal(), Cell::Blocked);
+    airCells_.clear();
     const Vec3i& dims = grid.dimensions();
     for (int k = 1; k < dims.z() - 1; ++k) {
         openToSky_.assign(static_cast<std::size_t>(dims.x()), 1);
@@ -64,16 +68,22 @@ void AirPocketFinder::classify(const NeighborGrid& grid, const std::vector<std::
                     openToSky_[i] = 0;
                     continue;
                 }
-                cells_[cell] = openToSky_[i] ? Cell::Atmosphere : Cell::Air;
+                if (openToSky_[i]) {
+                    cells_[cell] = Cell::Atmosphere;
+                } else {
+                    cells_[cell] = Cell::Air;
+                    airCells_.push_back(cell);
+                }
             }
     }
 }
 
 void AirPocketFinder::floodAtmosphere(const NeighborGrid& grid) {
     // The atmosphere spreads from the open sky sideways and upwards into the air under
-    // overhangs: the flood starts at the air cells beside it.
+    // overhangs: the flood starts at the air cells beside it. Only the air cells need a look,
+    // not the whole grid.
     queue_.clear();
-    for (int cell = 0; cell < static_cast<int>(cells_.size()); ++cell) {
+    for (int cell : airCells_) {
         if (cells_[cell] != Cell::Air)
             continue;
         bool besideSky = false;

@@ -4,7 +4,8 @@
 // existing bubble). A 6-connected flood fill from the air cells of the grid's top layer — the
 // open top of the domain — marks the atmosphere; the air cells it does not reach form connected
 // components, the pockets. Reuses the grid the step already built; a sweep down the columns
-// settles the open sky, so finding pockets costs about one pass over the cells.
+// settles the open sky and lists the air under water or solids, so finding pockets costs one
+// pass over the cells and a flood through that air.
 #include "bubbles/AirPocket.h"
 #include "sph/NeighborGrid.h"
 
@@ -38,6 +39,7 @@ private:
     void forEachFaceNeighbor(const NeighborGrid& grid, int cell, Visit&& visit) const;
 
     std::vector<Cell> cells_;
+    std::vector<int> airCells_; //!< the cells classify() found Air: under water or a solid
     std::vector<int> queue_;
     std::vector<std::uint8_t> solidScratch_;
     std::vector<std::uint8_t> openToSky_; //!< per x in the current column sweep
