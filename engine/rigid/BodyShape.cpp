@@ -66,6 +66,17 @@ double BodyShape::signedDistance(const Vec3d& x) const {
     return 0.0;
 }
 
+double BodyShape::clearanceBound(const Vec3d& x) const {
+    switch (kind_) {
+    case Kind::Mesh:
+        return -std::numeric_limits<double>::infinity();
+    case Kind::Tank:
+        return tankWallsDistance(x);
+    default: // exact distances
+        return signedDistance(x);
+    }
+}
+
 Vec3d BodyShape::normal(const Vec3d& x) const {
     switch (kind_) {
     case Kind::Box:
@@ -127,6 +138,16 @@ double BodyShape::tankDistance(const Vec3d& x) const {
         for (int axis : {0, 2})
             clearance = std::min(
                 {clearance, x[axis] - tankInside_.min[axis], tankInside_.max[axis] - x[axis]});
+    return clearance;
+}
+
+double BodyShape::tankWallsDistance(const Vec3d& x) const {
+    // The nearest of the floor and the four wall planes: equal to tankDistance() below the rim,
+    // never above it, and a true distance, since the minimum of plane distances is one.
+    double clearance = x.y() - tankInside_.min.y();
+    for (int axis : {0, 2})
+        clearance =
+            std::min({clearance, x[axis] - tankInside_.min[axis], tankInside_.max[axis] - x[axis]});
     return clearance;
 }
 

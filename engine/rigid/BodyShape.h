@@ -26,6 +26,11 @@ public:
     Kind kind() const { return kind_; }
     //! Distance to the surface at shape-frame `x`, m: negative inside the solid.
     double signedDistance(const Vec3d& x) const;
+    //! A lower bound of signedDistance() that changes by no more than the distance moved, so
+    //! every point within r of `x` lies at least clearanceBound(x) − r outside the solid: one
+    //! query clears a whole body of contacts. A tank's ignores the rim (walls taken as endless);
+    //! a mesh's field is only sampled, so it claims no bound (−∞).
+    double clearanceBound(const Vec3d& x) const;
     //! Outward unit normal of the solid's surface nearest to `x` (the direction in which the
     //! signed distance grows fastest).
     Vec3d normal(const Vec3d& x) const;
@@ -43,6 +48,7 @@ private:
     double cylinderDistance(const Vec3d& x) const;
     Vec3d cylinderNormal(const Vec3d& x) const;
     double tankDistance(const Vec3d& x) const;
+    double tankWallsDistance(const Vec3d& x) const;
     Vec3d tankNormal(const Vec3d& x) const;
 
     Kind kind_;

@@ -68,6 +68,10 @@ double RigidBody::signedDistance(const Vec3d& x) const {
     return shape_.signedDistance(toShapeFrame(x));
 }
 
+double RigidBody::clearanceBound(const Vec3d& x) const {
+    return shape_.clearanceBound(toShapeFrame(x));
+}
+
 Vec3d RigidBody::normalAt(const Vec3d& x) const {
     return state_.orientation * shape_.normal(toShapeFrame(x));
 }

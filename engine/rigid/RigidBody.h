@@ -86,6 +86,8 @@ public:
     //! Signed distance (m, negative inside) and outward world normal of the solid at world x.
     double signedDistance(const Vec3d& x) const;
     Vec3d normalAt(const Vec3d& x) const;
+    //! BodyShape::clearanceBound at world x.
+    double clearanceBound(const Vec3d& x) const;
     //! World position of the solid's surface under boundary particle `k`.
     Vec3d surfacePoint(std::size_t k) const;
 

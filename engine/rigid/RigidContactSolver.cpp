@@ -24,8 +24,23 @@ double inverseMassAlong(const RigidBody& body, const RigidBodyState& state, cons
                                               point - state.position);
 }
 
-//! Whether the bounding spheres of two bodies, grown by `margin`, overlap.
+//! Whether `a`, a body with a bounding sphere, may come within `margin` of `b`, a tank without
+//! one: its contact points lie within the sphere grown by the surface offset.
+bool mayTouchUnbounded(const RigidBody& a, const RigidBody& b, double margin) {
+    const double reach = a.shape().boundingRadius() + a.surfaceOffset() + margin;
+    return b.clearanceBound(a.shapePose().position) < reach;
+}
+
+//! Whether the bounding spheres of two bodies, grown by `margin`, overlap; against a tank, whether
+//! the bounded body's sphere reaches its walls. Every bubble meets the tank here each step: the
+//! one test saves the distance of each of its boundary particles.
 bool mayTouch(const RigidBody& a, const RigidBody& b, double margin) {
+    const bool boundedA = std::isfinite(a.shape().boundingRadius());
+    const bool boundedB = std::isfinite(b.shape().boundingRadius());
+    if (boundedA && !boundedB)
+        return mayTouchUnbounded(a, b, margin);
+    if (boundedB && !boundedA)
+        return mayTouchUnbounded(b, a, margin);
     const double reach = a.shape().boundingRadius() + b.shape().boundingRadius() + margin;
     if (!std::isfinite(reach))
         return true;

@@ -79,6 +79,35 @@ private Q_SLOTS:
                                         .arg(x.z())));
             }
     }
+
+    void clearanceBoundsNeverExceedTheDistanceNorChangeFasterThanIt() {
+        // A contact search skips a whole body on this bound: a point within r of x must lie at
+        // least clearanceBound(x) − r from the solid. Points run over and around the tank's rim,
+        // where its own distance jumps.
+        const BodyShape shapes[] = {BodyShape::box(Vec3d(0.3, 0.5, 0.7)), BodyShape::sphere(0.4),
+                                    BodyShape::cylinder(0.3, 0.8),
+                                    BodyShape::tank({Vec3d(-1, -1, -1), Vec3d(1, 1, 1)})};
+        std::mt19937 random(11);
+        std::uniform_real_distribution<double> coordinate(-1.6, 1.6);
+        std::uniform_real_distribution<double> offset(-0.3, 0.3);
+        for (const BodyShape& shape : shapes)
+            for (int sample = 0; sample < 2000; ++sample) {
+                const Vec3d x(coordinate(random), coordinate(random), coordinate(random));
+                const Vec3d y = x + Vec3d(offset(random), offset(random), offset(random));
+                const double bound = shape.clearanceBound(x);
+                QVERIFY(bound <= shape.signedDistance(x) + 1e-12);
+                QVERIFY2(shape.signedDistance(y) >= bound - (y - x).norm() - 1e-12,
+                         qPrintable(QString("shape %1 at (%2, %3, %4)")
+                                        .arg(int(shape.kind()))
+                                        .arg(x.x())
+                                        .arg(x.y())
+                                        .arg(x.z())));
+            }
+        // Inside the tank, below the rim, the bound is the distance itself.
+        const BodyShape tank = BodyShape::tank({Vec3d(-1, -1, -1), Vec3d(1, 1, 1)});
+        QCOMPARE(tank.clearanceBound(Vec3d(0.95, 0.0, 0.0)), 0.05);
+        QCOMPARE(tank.clearanceBound(Vec3d(0.0, -0.8, 0.0)), 0.2);
+    }
 };
 
 AIRTRAP_TEST_APPLESS(TestBodyShape)
