@@ -1,9 +1,5 @@
 #include "sph/BoundaryModel.h"
 
-#include <atomic>
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 namespace airtrap {
 
 BoundaryModel::BoundaryModel(const Aabb& gridDomain, float cellSize, float restDensity)
@@ -21,25 +17,6 @@ void BoundaryModel::rebuild(const std::vector<RigidBody>& bodies) {
     }
     moving_.rebuild(bodies, movingMembers_);
     gatherTerms(bodies);
-}
-
-void BoundaryModel::markWaterNearMovingLayer(const NeighborGrid& waterGrid,
-                                             const PositionArrays& water, float supportRadius) {
-    nearMoving_.assign(waterGrid.sortedCount(), 0);
-    // A hair wider than the passes' test, so rounding can only mark more water, never less: a
-    // marked particle still checks each distance itself.
-    const float radius2 = supportRadius * supportRadius * (1.0f + 1e-4f);
-    const auto& positions = moving_.positions();
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, positions.size(), 64), [&](const auto& r) {
-        for (std::size_t b = r.begin(); b != r.end(); ++b)
-            sweepNeighborsAround(waterGrid, water, positions[b], kSkipNone, radius2,
-                                 [&](std::uint32_t i, const Vec3f&, float) {
-                                     // Many boundary particles mark the same water particle,
-                                     // all with the same value.
-                                     std::atomic_ref<std::uint8_t>(nearMoving_[i])
-                                         .store(1, std::memory_order_relaxed);
-                                 });
-    });
 }
 
 void BoundaryModel::gatherTerms(const std::vector<RigidBody>& bodies) {
@@ -60,7 +37,7 @@ void BoundaryModel::gatherTerms(const std::vector<RigidBody>& bodies) {
 
 std::size_t BoundaryModel::allocatedBytes() const {
     return static_.allocatedBytes() + moving_.allocatedBytes() +
-           terms_.capacity() * sizeof(BodyContactTerms) + nearMoving_.capacity();
+           terms_.capacity() * sizeof(BodyContactTerms) + movingPairs_.allocatedBytes();
 }
 
 } // namespace airtrap

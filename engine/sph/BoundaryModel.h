@@ -6,6 +6,7 @@
 // every body (paper eq. 4).
 #include "sph/BodyContactTerms.h"
 #include "sph/BoundaryLayer.h"
+#include "sph/MovingLayerPairs.h"
 #include "sph/NeighborSweep.h"
 
 #include <array>
@@ -27,22 +28,14 @@ public:
     const BoundaryLayer& movingLayer() const { return moving_; }
     std::array<const BoundaryLayer*, 2> layers() const { return {&static_, &moving_}; }
 
-    //! Notes which water particles (sorted, on `waterGrid`) lie within `supportRadius` of a
-    //! moving layer's particle, by sweeping the water around each of those particles. The
-    //! layer's cell mask (BoundaryLayer::reaches) would send every water particle within a cell
-    //! of a bubble through the layer's sweep in both passes, about twice as many as touch it;
-    //! for the few hundred particles of bubbles and bodies this sweep is the cheaper test.
-    //! Call after rebuild() and after the water's sort, every step the moving layer is used.
-    void markWaterNearMovingLayer(const NeighborGrid& waterGrid, const PositionArrays& water,
-                                  float supportRadius);
-    //! Whether layer `layer` (one of layers()) may have particles within the support radius of
-    //! sorted water particle `i` at `x`: the water mark for the moving layer, the cell mask for
-    //! the static one.
-    bool mayReach(const BoundaryLayer* layer, std::size_t i, const Vec3f& x) const {
-        if (layer == &moving_)
-            return nearMoving_[i] != 0;
-        return layer->reaches(x);
+    //! Finds the pairs of sorted water particles (on `waterGrid`) and moving-layer particles
+    //! within `supportRadius` (MovingLayerPairs). Call after rebuild() and after the water's
+    //! sort, every step the moving layer is used.
+    void findMovingLayerPairs(const NeighborGrid& waterGrid, const PositionArrays& water,
+                              float supportRadius) {
+        movingPairs_.find(moving_, waterGrid, water, supportRadius);
     }
+    const MovingLayerPairs& movingPairs() const { return movingPairs_; }
     std::size_t size() const { return static_.size() + moving_.size(); }
     const BodyContactTerms& contactTerms(std::uint32_t body) const { return terms_[body]; }
     //! Whether any body is dynamic, so that the water's reaction must be gathered.
@@ -59,7 +52,7 @@ private:
     bool staticPlaced_ = false;
     std::vector<BodyContactTerms> terms_;
     bool hasDynamicBodies_ = false;
-    std::vector<std::uint8_t> nearMoving_; //!< per sorted water particle: 1 near the moving layer
+    MovingLayerPairs movingPairs_;
 };
 
 } // namespace airtrap

@@ -42,26 +42,37 @@ void InteractionPass::densityRates(const InteractionInputs& in, std::vector<floa
     });
 }
 
+template <class Visit>
+void InteractionPass::forEachBoundaryNeighbor(std::size_t i, const Vec3f& xi,
+                                              const BoundaryModel& boundary, Visit&& visit) const {
+    const auto visitWithin = [&](const BoundaryLayer& layer, std::uint32_t b) {
+        const Vec3f d = xi - layer.positions()[b];
+        const float r2 = d.squaredNorm();
+        if (r2 < radius2_)
+            visit(layer, b, d, r2);
+    };
+    const BoundaryLayer& fixed = boundary.staticLayer();
+    if (fixed.size() > 0 && fixed.reaches(xi))
+        fixed.grid().forEachNeighborRange(xi, kernel_.supportRadius(),
+                                          [&](std::uint32_t begin, std::uint32_t end) {
+                                              for (std::uint32_t b = begin; b < end; ++b)
+                                                  visitWithin(fixed, b);
+                                          });
+    const BoundaryLayer& moving = boundary.movingLayer();
+    if (moving.size() > 0)
+        for (std::uint32_t b : boundary.movingPairs().boundaryNear(i))
+            visitWithin(moving, b);
+}
+
 float InteractionPass::boundaryDensityRate(std::size_t i, const InteractionInputs& in) const {
-    const Vec3f xi = in.positions[i];
     const Vec3f vi = in.fluid.velocities[i];
     float rate = 0.0f;
-    for (const BoundaryLayer* layer : in.boundary.layers()) {
-        if (layer->size() == 0 || !in.boundary.mayReach(layer, i, xi))
-            continue;
-        const auto& bx = layer->positions();
-        const auto& bv = layer->velocities();
-        const auto& bpsi = layer->psi();
-        layer->grid().forEachNeighborRange(
-            xi, kernel_.supportRadius(), [&](std::uint32_t begin, std::uint32_t end) {
-                for (std::uint32_t b = begin; b < end; ++b) {
-                    const Vec3f d = xi - bx[b];
-                    const float r2 = d.squaredNorm();
-                    if (r2 < radius2_)
-                        rate += bpsi[b] * (vi - bv[b]).dot(kernel_.gradientFromSquared(d, r2));
-                }
-            });
-    }
+    forEachBoundaryNeighbor(
+        i, in.positions[i], in.boundary,
+        [&](const BoundaryLayer& layer, std::uint32_t b, const Vec3f& d, float r2) {
+            rate += layer.psi()[b] *
+                    (vi - layer.velocities()[b]).dot(kernel_.gradientFromSquared(d, r2));
+        });
     return rate;
 }
 
@@ -135,26 +146,16 @@ Vec3f InteractionPass::boundaryForce(std::size_t i, const InteractionInputs& in,
     const float rhoi = in.fluid.densities[i];
     contact.distance2 = constants_.contactRadius * constants_.contactRadius;
     Vec3f force = Vec3f::Zero();
-    for (const BoundaryLayer* layer : in.boundary.layers()) {
-        if (layer->size() == 0 || !in.boundary.mayReach(layer, i, xi))
-            continue;
-        const auto& bx = layer->positions();
-        layer->grid().forEachNeighborRange(
-            xi, kernel_.supportRadius(), [&](std::uint32_t begin, std::uint32_t end) {
-                for (std::uint32_t b = begin; b < end; ++b) {
-                    const Vec3f d = xi - bx[b];
-                    const float r2 = d.squaredNorm();
-                    if (r2 >= radius2_)
-                        continue;
-                    force += boundaryPairAcceleration(xi, vi, rhoi, pressureTerm, b, d, r2, *layer);
-                    if (r2 < contact.distance2) {
-                        contact.distance2 = r2;
-                        contact.layer = layer;
-                        contact.boundaryParticle = b;
-                    }
-                }
-            });
-    }
+    forEachBoundaryNeighbor(
+        i, xi, in.boundary,
+        [&](const BoundaryLayer& layer, std::uint32_t b, const Vec3f& d, float r2) {
+            force += boundaryPairAcceleration(xi, vi, rhoi, pressureTerm, b, d, r2, layer);
+            if (r2 < contact.distance2) {
+                contact.distance2 = r2;
+                contact.layer = &layer;
+                contact.boundaryParticle = b;
+            }
+        });
     return force;
 }
 
@@ -234,17 +235,19 @@ void InteractionPass::bodyReactions(const InteractionInputs& in,
             const Vec3f xb = layer.positions()[b];
             Vec3f force = Vec3f::Zero();
             // The water's pairs with this boundary particle, the same ones and in the same order
-            // as the force pass met them: d points from the boundary particle to the water.
-            sweepNeighborsAround(
-                in.grid, in.positions, xb, kSkipNone, radius2_,
-                [&](std::uint32_t i, const Vec3f& towardsBoundary, float r2) {
-                    force -= constants_.mass *
-                             boundaryPairAcceleration(in.positions[i], in.fluid.velocities[i],
-                                                      in.fluid.densities[i], pressureTerms[i], b,
-                                                      -towardsBoundary, r2, layer);
-                    if (contacts.boundaryParticle[i] == static_cast<std::int32_t>(b))
-                        force -= inverseStep * contacts.impulse[i];
-                });
+            // as the force pass met them.
+            for (std::uint32_t i : boundary.movingPairs().waterNear(b)) {
+                const Vec3f xi = in.positions[i];
+                const Vec3f d = xi - xb;
+                const float r2 = d.squaredNorm();
+                if (r2 >= radius2_)
+                    continue;
+                force -= constants_.mass *
+                         boundaryPairAcceleration(xi, in.fluid.velocities[i], in.fluid.densities[i],
+                                                  pressureTerms[i], b, d, r2, layer);
+                if (contacts.boundaryParticle[i] == static_cast<std::int32_t>(b))
+                    force -= inverseStep * contacts.impulse[i];
+            }
             forces[b] = force.cast<double>();
         }
     });

@@ -70,6 +70,12 @@ private:
         float distance2 = 0.0f;
     };
 
+    //! Calls visit(layer, b, d, r²) for every boundary particle b within the support of sorted
+    //! water particle i at xi, d = xi − x_b: the static layer's from its grid, the moving
+    //! layer's from the step's pair list; ascending within each layer.
+    template <class Visit>
+    void forEachBoundaryNeighbor(std::size_t i, const Vec3f& xi, const BoundaryModel& boundary,
+                                 Visit&& visit) const;
     float boundaryDensityRate(std::size_t i, const InteractionInputs& in) const;
     Vec3f waterForce(std::size_t i, const InteractionInputs& in, const NeighborList& neighbors,
                      const std::vector<float>& pressureTerms) const;

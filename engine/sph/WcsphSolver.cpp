@@ -89,7 +89,7 @@ StepReport WcsphSolver::step(SimulationState& state, double timeToFrameEnd) {
     sortWaterAndPlaceBodies(state, report);
     if (boundary_.movingLayer().size() > 0) {
         StepPhases::Scope scope(phases_, StepPhases::Bodies);
-        boundary_.markWaterNearMovingLayer(grid_, sortedPositions_, kernel_.supportRadius());
+        boundary_.findMovingLayerPairs(grid_, sortedPositions_, kernel_.supportRadius());
     }
     report.timeStep = chooseTimeStep(report.maxSpeed, state.lastMaxAcceleration, timeToFrameEnd);
     const InteractionInputs inputs{fluid, sortedPositions_, grid_, boundary_};

@@ -1,7 +1,7 @@
-// The water marks itself near the moving layer by sweeping around that layer's particles: every
-// water particle within the support radius of one must be marked, or the passes would miss its
-// boundary force; and the mark must pick out fewer particles than the layer's cell mask, which is
-// what it is for.
+// The pairs of water and moving-layer particles are found by sweeping around the layer's
+// particles: every pair closer than the support radius must be listed, or the passes would miss
+// its boundary force; both views must list the same pairs in ascending order, which is what keeps
+// the passes' sums identical to a grid sweep's; and a new search must forget the last one.
 #include "rigid/MassProperties.h"
 #include "rigid/RigidBody.h"
 #include "rigid/ShapeSampler.h"
@@ -9,6 +9,7 @@
 #include "support/TestMain.h"
 
 #include <QtTest>
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -31,11 +32,11 @@ RigidBody sphereBody(const Vec3d& centre, double radius, bool dynamic) {
 }
 
 //! Random water around the spheres, sorted on its grid as the solver sorts it.
-PositionArrays sortedWater(NeighborGrid& grid) {
-    std::mt19937 rng(5);
+PositionArrays sortedWater(NeighborGrid& grid, int count = 30000, unsigned seed = 5) {
+    std::mt19937 rng(seed);
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
     std::vector<Vec3f> water;
-    for (int n = 0; n < 30000; ++n)
+    for (int n = 0; n < count; ++n)
         water.emplace_back(0.1f + 0.6f * u(rng), 0.05f + 0.5f * u(rng), 0.05f + 0.4f * u(rng));
     grid.build(water);
     PositionArrays sorted;
@@ -49,11 +50,58 @@ PositionArrays sortedWater(NeighborGrid& grid) {
     return sorted;
 }
 
-float nearestDistance(const Vec3f& x, const std::vector<Vec3f>& points) {
-    float nearest2 = std::numeric_limits<float>::max();
-    for (const Vec3f& p : points)
-        nearest2 = std::min(nearest2, (x - p).squaredNorm());
-    return std::sqrt(nearest2);
+//! The layer's particles within the support of x, ascending, by brute force.
+std::vector<std::uint32_t> boundaryWithinSupport(const Vec3f& x, const BoundaryLayer& layer) {
+    std::vector<std::uint32_t> near;
+    for (std::uint32_t b = 0; b < layer.size(); ++b)
+        if ((x - layer.positions()[b]).squaredNorm() < kModelSupport * kModelSupport)
+            near.push_back(b);
+    return near;
+}
+
+std::vector<RigidBody> twoDynamicSpheresAndAStaticOne() {
+    return {sphereBody(Vec3d(0.3, 0.2, 0.25), 0.05, true),
+            sphereBody(Vec3d(0.5, 0.35, 0.2), 0.03, true),
+            sphereBody(Vec3d(0.6, 0.1, 0.3), 0.04, false)};
+}
+
+//! Checks that `pairs` lists exactly the pairs of `moving` and `water` within the support (a
+//! hair more at most), ascending in both views; returns how many water particles have pairs.
+int checkPairs(const MovingLayerPairs& pairs, const BoundaryLayer& moving,
+               const PositionArrays& water) {
+    int withPairs = 0;
+    std::size_t listed = 0;
+    for (std::size_t i = 0; i < water.x.size(); ++i) {
+        const Vec3f x = water[i];
+        const auto near = pairs.boundaryNear(i);
+        const std::vector<std::uint32_t> expected = boundaryWithinSupport(x, moving);
+        std::size_t next = 0;
+        for (std::size_t k = 0; k < near.size(); ++k) {
+            const std::uint32_t b = near[k];
+            if (k > 0 && near[k - 1] >= b)
+                return -1; // not ascending
+            // The list is a hair wider than the support, never more.
+            if ((x - moving.positions()[b]).norm() >= kModelSupport * 1.0001f)
+                return -2;
+            const auto inWater = pairs.waterNear(b);
+            if (!std::binary_search(inWater.begin(), inWater.end(), std::uint32_t(i)))
+                return -3; // the two views disagree
+            if (next < expected.size() && expected[next] == b)
+                ++next;
+        }
+        if (next != expected.size())
+            return -4; // a pair within the support is missing
+        withPairs += near.empty() ? 0 : 1;
+        listed += near.size();
+    }
+    std::size_t byBoundary = 0;
+    for (std::size_t b = 0; b < moving.size(); ++b) {
+        const auto inWater = pairs.waterNear(b);
+        if (!std::is_sorted(inWater.begin(), inWater.end()))
+            return -5;
+        byBoundary += inWater.size();
+    }
+    return byBoundary == listed && listed == pairs.pairCount() ? withPairs : -6;
 }
 
 } // namespace
@@ -62,33 +110,40 @@ class TestBoundaryModel : public QObject {
     Q_OBJECT
 
 private Q_SLOTS:
-    void marksExactlyTheWaterWithinTheSupportOfTheMovingLayer() {
-        const std::vector<RigidBody> bodies = {sphereBody(Vec3d(0.3, 0.2, 0.25), 0.05, true),
-                                               sphereBody(Vec3d(0.5, 0.35, 0.2), 0.03, true),
-                                               sphereBody(Vec3d(0.6, 0.1, 0.3), 0.04, false)};
+    void listsExactlyThePairsWithinTheSupportOfTheMovingLayer() {
+        const std::vector<RigidBody> bodies = twoDynamicSpheresAndAStaticOne();
         BoundaryModel model(kModelDomain, kModelSupport, 1000.0f);
         model.rebuild(bodies);
         NeighborGrid grid(kModelDomain, kModelSupport);
         const PositionArrays water = sortedWater(grid);
-        model.markWaterNearMovingLayer(grid, water, kModelSupport);
+        model.findMovingLayerPairs(grid, water, kModelSupport);
 
         const BoundaryLayer& moving = model.movingLayer();
-        int marked = 0, nearByCell = 0;
-        for (std::size_t i = 0; i < water.x.size(); ++i) {
-            const Vec3f x = water[i];
-            const float distance = nearestDistance(x, moving.positions());
-            const bool isMarked = model.mayReach(&moving, i, x);
-            if (distance < kModelSupport)
-                QVERIFY2(isMarked, qPrintable(QString("unmarked at %1 m").arg(distance)));
-            // The mark is a hair wider than the support, never more.
-            if (isMarked)
-                QVERIFY2(distance < kModelSupport * 1.0001f, qPrintable(QString::number(distance)));
-            marked += isMarked;
-            nearByCell += moving.reaches(x);
-        }
-        QVERIFY(marked > 500);
-        QVERIFY2(2 * marked < nearByCell,
-                 qPrintable(QString("%1 marked, %2 in reached cells").arg(marked).arg(nearByCell)));
+        const int withPairs = checkPairs(model.movingPairs(), moving, water);
+        QCOMPARE(std::size_t(withPairs), model.movingPairs().waterCount());
+        int nearByCell = 0;
+        for (std::size_t i = 0; i < water.x.size(); ++i)
+            nearByCell += moving.reaches(water[i]);
+        QVERIFY2(withPairs > 500, qPrintable(QString::number(withPairs)));
+        // What the list saves: the layer's cell mask would send twice as many through a sweep.
+        QVERIFY2(2 * withPairs < nearByCell,
+                 qPrintable(
+                     QString("%1 with pairs, %2 in reached cells").arg(withPairs).arg(nearByCell)));
+    }
+
+    void aNewSearchForgetsTheLastOne() {
+        const std::vector<RigidBody> bodies = twoDynamicSpheresAndAStaticOne();
+        BoundaryModel model(kModelDomain, kModelSupport, 1000.0f);
+        model.rebuild(bodies);
+        NeighborGrid grid(kModelDomain, kModelSupport);
+        const PositionArrays first = sortedWater(grid);
+        model.findMovingLayerPairs(grid, first, kModelSupport);
+        // Fewer particles, elsewhere: last step's marks beyond the new count must not linger.
+        const PositionArrays second = sortedWater(grid, 12000, 9);
+        model.findMovingLayerPairs(grid, second, kModelSupport);
+        const int withPairs = checkPairs(model.movingPairs(), model.movingLayer(), second);
+        QVERIFY2(withPairs > 100, qPrintable(QString::number(withPairs)));
+        QVERIFY(model.movingPairs().boundaryNear(first.x.size() - 1).empty());
     }
 
     void theStaticLayerKeepsItsCellMask() {
@@ -99,9 +154,8 @@ private Q_SLOTS:
         QVERIFY(fixed.size() > 0);
         const Vec3f beside(0.6f, 0.1f, 0.3f + 0.05f);
         const Vec3f far(0.1f, 0.9f, 0.1f);
-        QCOMPARE(model.mayReach(&fixed, 0, beside), fixed.reaches(beside));
-        QVERIFY(model.mayReach(&fixed, 0, beside));
-        QVERIFY(!model.mayReach(&fixed, 0, far));
+        QVERIFY(fixed.reaches(beside));
+        QVERIFY(!fixed.reaches(far));
     }
 };
 
