@@ -23,7 +23,6 @@ std::optional<FittedBubble> BubbleFitter::fit(const AirPocket& pocket, const Nei
     bubble.centre = pocket.centre;
     bubble.radius = radius;
     bubble.pocketVolume = pocket.volume;
-    bubble.areaFractionInWater = areaFractionInWater(pocket.centre, radius, grid, positions);
     return bubble;
 }
 

@@ -52,7 +52,9 @@ std::size_t BubbleSpawner::spawn(SimulationState& state, const Water& water,
         bubble.radius = fitted.radius;
         bubble.body.position = fitted.centre;
         bubble.body.linearVelocity = surroundingVelocity(fitted, water);
-        bubble.areaFractionInWater = fitted.areaFractionInWater;
+        // Of the bubble as made: a body nearby may have shrunk it since the fit.
+        bubble.areaFractionInWater =
+            fitter_.areaFractionInWater(fitted.centre, fitted.radius, grid, water.positions);
         bubble.pocketVolume = fitted.pocketVolume;
         state.bubbles.push_back(bubble);
         ++made;

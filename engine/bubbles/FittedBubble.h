@@ -6,9 +6,8 @@ namespace airtrap {
 
 struct FittedBubble {
     Vec3d centre = Vec3d::Zero();
-    double radius = 0.0;              //!< m
-    double areaFractionInWater = 0.0; //!< share of surface samples with water next to them
-    double pocketVolume = 0.0;        //!< m³
+    double radius = 0.0;       //!< m
+    double pocketVolume = 0.0; //!< m³
 };
 
 } // namespace airtrap
