@@ -9,7 +9,6 @@
 #include "sph/MovingLayerPairs.h"
 #include "sph/NeighborSweep.h"
 
-#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -26,7 +25,6 @@ public:
     const BoundaryLayer& staticLayer() const { return static_; }
     //! Holds every dynamic body's particles: the water's reaction is gathered here.
     const BoundaryLayer& movingLayer() const { return moving_; }
-    std::array<const BoundaryLayer*, 2> layers() const { return {&static_, &moving_}; }
 
     //! Finds the pairs of sorted water particles (on `waterGrid`) and moving-layer particles
     //! within `supportRadius` (MovingLayerPairs). Call after rebuild() and after the water's

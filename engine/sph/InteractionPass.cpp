@@ -234,8 +234,8 @@ void InteractionPass::bodyReactions(const InteractionInputs& in,
                 continue;
             const Vec3f xb = layer.positions()[b];
             Vec3f force = Vec3f::Zero();
-            // The water's pairs with this boundary particle, the same ones and in the same order
-            // as the force pass met them.
+            // The pairs the force pass met, from this boundary particle's side, in the water's
+            // sorted order.
             for (std::uint32_t i : boundary.movingPairs().waterNear(b)) {
                 const Vec3f xi = in.positions[i];
                 const Vec3f d = xi - xb;
