@@ -6,6 +6,7 @@
 
 #include <QtTest>
 #include <random>
+#include <vector>
 
 using namespace airtrap;
 
@@ -20,6 +21,20 @@ Vec3d numericGradient(const BodyShape& shape, const Vec3d& x) {
         g[axis] = (shape.signedDistance(x + step) - shape.signedDistance(x - step)) / (2 * h);
     }
     return g;
+}
+
+//! One shape of each analytic kind, the tank a 2 m box about the origin.
+std::vector<BodyShape> analyticShapes() {
+    return {BodyShape::box(Vec3d(0.3, 0.5, 0.7)), BodyShape::sphere(0.4),
+            BodyShape::cylinder(0.3, 0.8), BodyShape::tank({Vec3d(-1, -1, -1), Vec3d(1, 1, 1)})};
+}
+
+QString where(const BodyShape& shape, const Vec3d& x) {
+    return QString("shape %1 at (%2, %3, %4)")
+        .arg(int(shape.kind()))
+        .arg(x.x())
+        .arg(x.y())
+        .arg(x.z());
 }
 
 } // namespace
@@ -60,9 +75,7 @@ private Q_SLOTS:
     }
 
     void normalsFollowTheDistanceGradient() {
-        const BodyShape shapes[] = {BodyShape::box(Vec3d(0.3, 0.5, 0.7)), BodyShape::sphere(0.4),
-                                    BodyShape::cylinder(0.3, 0.8),
-                                    BodyShape::tank({Vec3d(-1, -1, -1), Vec3d(1, 1, 1)})};
+        const std::vector<BodyShape> shapes = analyticShapes();
         std::mt19937 random(7);
         std::uniform_real_distribution<double> coordinate(-0.9, 0.9);
         for (const BodyShape& shape : shapes)
@@ -71,12 +84,7 @@ private Q_SLOTS:
                 const Vec3d g = numericGradient(shape, x);
                 if (std::abs(g.norm() - 1.0) > 1e-3)
                     continue; // on a ridge of the distance (medial axis): no single gradient
-                QVERIFY2((shape.normal(x) - g).norm() < 1e-4,
-                         qPrintable(QString("shape %1 at (%2, %3, %4)")
-                                        .arg(int(shape.kind()))
-                                        .arg(x.x())
-                                        .arg(x.y())
-                                        .arg(x.z())));
+                QVERIFY2((shape.normal(x) - g).norm() < 1e-4, qPrintable(where(shape, x)));
             }
     }
 
@@ -84,9 +92,7 @@ private Q_SLOTS:
         // A contact search skips a whole body on this bound: a point within r of x must lie at
         // least clearanceBound(x) − r from the solid. Points run over and around the tank's rim,
         // where its own distance jumps.
-        const BodyShape shapes[] = {BodyShape::box(Vec3d(0.3, 0.5, 0.7)), BodyShape::sphere(0.4),
-                                    BodyShape::cylinder(0.3, 0.8),
-                                    BodyShape::tank({Vec3d(-1, -1, -1), Vec3d(1, 1, 1)})};
+        const std::vector<BodyShape> shapes = analyticShapes();
         std::mt19937 random(11);
         std::uniform_real_distribution<double> coordinate(-1.6, 1.6);
         std::uniform_real_distribution<double> offset(-0.3, 0.3);
@@ -97,11 +103,7 @@ private Q_SLOTS:
                 const double bound = shape.clearanceBound(x);
                 QVERIFY(bound <= shape.signedDistance(x) + 1e-12);
                 QVERIFY2(shape.signedDistance(y) >= bound - (y - x).norm() - 1e-12,
-                         qPrintable(QString("shape %1 at (%2, %3, %4)")
-                                        .arg(int(shape.kind()))
-                                        .arg(x.x())
-                                        .arg(x.y())
-                                        .arg(x.z())));
+                         qPrintable(where(shape, x)));
             }
         // Inside the tank, below the rim, the bound is the distance itself.
         const BodyShape tank = BodyShape::tank({Vec3d(-1, -1, -1), Vec3d(1, 1, 1)});

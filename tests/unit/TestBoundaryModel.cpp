@@ -59,10 +59,14 @@ std::vector<std::uint32_t> boundaryWithinSupport(const Vec3f& x, const BoundaryL
     return near;
 }
 
-std::vector<RigidBody> twoDynamicSpheresAndAStaticOne() {
-    return {sphereBody(Vec3d(0.3, 0.2, 0.25), 0.05, true),
-            sphereBody(Vec3d(0.5, 0.35, 0.2), 0.03, true),
-            sphereBody(Vec3d(0.6, 0.1, 0.3), 0.04, false)};
+//! Two dynamic spheres, in the moving layer, and a static one, placed.
+BoundaryModel modelOfTwoDynamicSpheresAndAStaticOne() {
+    const std::vector<RigidBody> bodies = {sphereBody(Vec3d(0.3, 0.2, 0.25), 0.05, true),
+                                           sphereBody(Vec3d(0.5, 0.35, 0.2), 0.03, true),
+                                           sphereBody(Vec3d(0.6, 0.1, 0.3), 0.04, false)};
+    BoundaryModel model(kModelDomain, kModelSupport, 1000.0f);
+    model.rebuild(bodies);
+    return model;
 }
 
 //! Checks that `pairs` lists exactly the pairs of `moving` and `water` within the support (a
@@ -111,9 +115,7 @@ class TestBoundaryModel : public QObject {
 
 private Q_SLOTS:
     void listsExactlyThePairsWithinTheSupportOfTheMovingLayer() {
-        const std::vector<RigidBody> bodies = twoDynamicSpheresAndAStaticOne();
-        BoundaryModel model(kModelDomain, kModelSupport, 1000.0f);
-        model.rebuild(bodies);
+        BoundaryModel model = modelOfTwoDynamicSpheresAndAStaticOne();
         NeighborGrid grid(kModelDomain, kModelSupport);
         const PositionArrays water = sortedWater(grid);
         model.findMovingLayerPairs(grid, water, kModelSupport);
@@ -132,9 +134,7 @@ private Q_SLOTS:
     }
 
     void aNewSearchForgetsTheLastOne() {
-        const std::vector<RigidBody> bodies = twoDynamicSpheresAndAStaticOne();
-        BoundaryModel model(kModelDomain, kModelSupport, 1000.0f);
-        model.rebuild(bodies);
+        BoundaryModel model = modelOfTwoDynamicSpheresAndAStaticOne();
         NeighborGrid grid(kModelDomain, kModelSupport);
         const PositionArrays first = sortedWater(grid);
         model.findMovingLayerPairs(grid, first, kModelSupport);
