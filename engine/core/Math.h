@@ -12,6 +12,8 @@ using Vec3i = Eigen::Vector3i;
 using Mat3d = Eigen::Matrix3d;
 using Quatd = Eigen::Quaterniond;
 
+inline constexpr double kPi = 3.14159265358979323846;
+
 //! Axis-aligned box in double precision.
 struct Aabb {
     Vec3d min = Vec3d::Zero();

@@ -6,10 +6,6 @@
 
 namespace airtrap {
 
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-}
-
 OscillatingBubbleMesh::OscillatingBubbleMesh(const BubbleMeshSettings& settings)
     : settings_(settings), unitSphere_(unitIcosphere(settings.subdivisions)) {
     // A tessellated sphere encloses less than the sphere (3.4 % less at 2 subdivisions): grown

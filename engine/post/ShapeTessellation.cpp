@@ -10,8 +10,6 @@ namespace airtrap {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 //! Appends the quad a b c d (counter-clockwise seen from outside) with vertices of its own.
 void addQuad(TriangleMesh& mesh, const Vec3d& a, const Vec3d& b, const Vec3d& c, const Vec3d& d) {
     const auto first = std::uint32_t(mesh.vertices.size());

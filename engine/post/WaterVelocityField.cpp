@@ -4,10 +4,6 @@
 
 namespace airtrap {
 
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-}
-
 WaterVelocityField::WaterVelocityField(const ParticleSet& fluid, double supportRadius)
     : fluid_(fluid), support_(supportRadius) {
     for (std::size_t n = 0; n < fluid.size(); ++n)

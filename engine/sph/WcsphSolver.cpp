@@ -15,7 +15,7 @@ namespace airtrap {
 namespace {
 
 constexpr double kTaitGamma = 7.0;
-constexpr std::size_t kGrain = 1024;
+constexpr std::size_t kParticleGrain = 1024;
 
 using Range = tbb::blocked_range<std::size_t>;
 
@@ -23,7 +23,7 @@ using Range = tbb::blocked_range<std::size_t>;
 template <class F>
 double parallelMax(std::size_t n, F&& f) {
     return tbb::parallel_reduce(
-        Range(0, n, kGrain), 0.0,
+        Range(0, n, kParticleGrain), 0.0,
         [&](const Range& r, double best) {
             for (std::size_t i = r.begin(); i != r.end(); ++i)
                 best = std::max(best, static_cast<double>(f(i)));
@@ -305,7 +305,7 @@ void WcsphSolver::shepardFilter(ParticleSet& fluid) {
     const float selfWeight = kernel_.value(0.0f);
     std::vector<float>& filtered = densityRates_; // free until the density pass
     filtered.resize(n);
-    tbb::parallel_for(Range(0, n, kGrain), [&](const Range& r) {
+    tbb::parallel_for(Range(0, n, kParticleGrain), [&](const Range& r) {
         for (std::size_t i = r.begin(); i != r.end(); ++i) {
             float weight = selfWeight;
             float weightOverDensity = selfWeight / fluid.densities[i];
@@ -324,7 +324,7 @@ void WcsphSolver::shepardFilter(ParticleSet& fluid) {
 bool WcsphSolver::integrate(ParticleSet& fluid, double dt) {
     const float step = static_cast<float>(dt);
     std::atomic<bool> nonFinite{false};
-    tbb::parallel_for(Range(0, fluid.size(), kGrain), [&](const Range& r) {
+    tbb::parallel_for(Range(0, fluid.size(), kParticleGrain), [&](const Range& r) {
         for (std::size_t i = r.begin(); i != r.end(); ++i) {
             // Symplectic Euler: the new velocity moves the particle.
             fluid.velocities[i] += step * accelerations_[i];

@@ -16,7 +16,6 @@ using namespace airtrap;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kSpacing = 0.02;
 constexpr double kDepth = 0.3;
 const Vec3d kBubbleCentre(0.5, kDepth, 0.5);

@@ -13,8 +13,6 @@ using namespace airtrap;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 BubbleState bubbleAt(const Vec3d& centre, double radius, const Vec3d& velocity, double age) {
     BubbleState bubble;
     bubble.radius = radius;

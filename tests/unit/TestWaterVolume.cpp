@@ -12,8 +12,6 @@ using namespace airtrap;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 //! Particles at the centres of the `spacing` lattice cells filling `box`, as a fluid block is
 //! filled, so the block's volume is exactly count × spacing³.
 ParticleSet latticeBlock(const Aabb& box, double spacing) {
