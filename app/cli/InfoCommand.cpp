@@ -1,5 +1,6 @@
 #include "InfoCommand.h"
 
+#include "BubbleCensusReport.h"
 #include "InfoReport.h"
 #include "cache/FrameCache.h"
 #include "core/Error.h"
@@ -13,11 +14,17 @@ void InfoCommand::addTo(CLI::App& parent) {
     app_->add_option("DIR", cacheDir_, "Cache folder")->required();
     app_->add_option("--frame", frame_, "Frame to describe (default: the last good frame)")
         ->check(CLI::PositiveNumber);
-    app_->add_flag("--json", json_, "Print one JSON object (fields as in DESIGN §5)");
+    app_->add_flag("--json", json_, "Print one JSON object (fields in docs/CLI.md)");
+    app_->add_flag("--bubbles", bubbles_,
+                   "Survey where the trapped bubbles lived in every frame: in water, floating or "
+                   "airborne (docs/VALIDATION.md)")
+        ->excludes("--frame");
 }
 
 ExitCode InfoCommand::run() {
     const FrameCache cache = FrameCache::open(cacheDir_);
+    if (bubbles_)
+        return surveyBubbles(cache);
     int frame = frame_;
     if (frame == 0) {
         std::vector<std::string> problems;
@@ -32,6 +39,17 @@ ExitCode InfoCommand::run() {
     }
     const FrameData data = cache.readFrame(frame);
     const InfoReport report(data, cache.manifest(), cache.directory());
+    if (json_)
+        std::cout << report.toJson().dump(2) << '\n';
+    else
+        report.printText(std::cout);
+    return ExitCode::Success;
+}
+
+ExitCode InfoCommand::surveyBubbles(const FrameCache& cache) const {
+    if (cache.frames().empty())
+        throw Error(ErrorKind::InvalidInput, cache.directory() + " holds no frames yet");
+    const BubbleCensusReport report(cache, std::cerr);
     if (json_)
         std::cout << report.toJson().dump(2) << '\n';
     else

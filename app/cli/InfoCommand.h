@@ -1,7 +1,8 @@
 #pragma once
 // `airtrap-cli info DIR [--frame N] [--json]`: what one cached frame holds (default: the last good
-// frame), as text or as the JSON object of DESIGN §5.
+// frame), as text or as the JSON object of docs/CLI.md; `--bubbles` surveys every frame's bubbles.
 #include "Command.h"
+#include "cache/FrameCache.h"
 
 #include <string>
 
@@ -13,9 +14,12 @@ public:
     ExitCode run() override;
 
 private:
+    ExitCode surveyBubbles(const FrameCache& cache) const;
+
     std::string cacheDir_;
     int frame_ = 0;
     bool json_ = false;
+    bool bubbles_ = false;
 };
 
 } // namespace airtrap::cli
