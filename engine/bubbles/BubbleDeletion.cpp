@@ -13,9 +13,10 @@ void BubbleDeletion::afterStep(std::vector<BubbleState>& bubbles, double dt,
             bubble.surroundings.measured ? &bubble.surroundings : nullptr;
         // Water landing on a floating bubble covers it in the step it hits: the bubble was
         // floating if it floated up to this step.
-        const bool wasFloating = bubble.floatingTime > 0.0 || (around && around->floating);
+        const bool floating = around && around->placement() == BubbleImmersion::Placement::Floating;
+        const bool wasFloating = bubble.floatingTime > 0.0 || floating;
         bubble.age += dt;
-        bubble.floatingTime = around && around->floating ? bubble.floatingTime + dt : 0.0;
+        bubble.floatingTime = floating ? bubble.floatingTime + dt : 0.0;
         verdicts[k] = ownRule(bubble, around, wasFloating);
     }
     markOverlaps(bubbles, verdicts);
@@ -23,6 +24,8 @@ void BubbleDeletion::afterStep(std::vector<BubbleState>& bubbles, double dt,
     for (std::size_t k = 0; k < bubbles.size(); ++k) {
         if (verdicts[k] != BubbleTally::RuleCount) {
             ++tally.deleted[verdicts[k]];
+            if (verdicts[k] == BubbleTally::Surfaced && bubbles[k].age < BubbleTally::kYoungAge)
+                ++tally.surfacedYoung;
             continue;
         }
         bubbles[kept++] = bubbles[k];
@@ -35,6 +38,10 @@ BubbleTally::Rule BubbleDeletion::ownRule(const BubbleState& bubble,
                                           bool wasFloating) const {
     if (bubble.age > settings_.maxAge)
         return BubbleTally::Age;
+    // Out of the water a bubble is air among air: it has popped (paper §3.4 deletes a bubble at
+    // the surface; one the water no longer holds is past it).
+    if (around && around->placement() == BubbleImmersion::Placement::Airborne)
+        return BubbleTally::Surfaced;
     if (bubble.floatingTime > settings_.maxFloatingTime)
         return BubbleTally::Floating;
     if (around && wasFloating && around->impactSpeed > settings_.impactSpeed)

@@ -3,7 +3,9 @@
 // older than the maximum age, (2) it has floated at the free surface longer than the maximum
 // floating time, (3) it overlaps another bubble by more than the maximum share of the smaller
 // one's diameter (the smaller one goes), or (4) it floats and water hits it faster than the
-// impact speed. Each deletion is counted under its rule.
+// impact speed; and (5, `surfaced`) at once when it has left the water. Floating and out of the
+// water are judged by BubbleImmersion's probes: floating with 7–12 of the 26 wet, out of the
+// water with fewer. Each deletion is counted under its rule.
 #include "bubbles/BubbleState.h"
 #include "bubbles/BubbleSurroundings.h"
 #include "bubbles/BubbleTally.h"

@@ -8,36 +8,8 @@
 namespace airtrap {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 float square(float x) {
     return x * x;
-}
-
-//! Directions around a bubble whose water cover is judged apart: the 6 axes and 8 diagonals.
-const std::array<Vec3d, 14>& coverDirections() {
-    static const std::array<Vec3d, 14> directions = [] {
-        std::array<Vec3d, 14> d;
-        int n = 0;
-        for (int axis = 0; axis < 3; ++axis)
-            for (double sign : {-1.0, 1.0})
-                d[n++] = sign * Vec3d::Unit(axis);
-        for (double x : {-1.0, 1.0})
-            for (double y : {-1.0, 1.0})
-                for (double z : {-1.0, 1.0})
-                    d[n++] = Vec3d(x, y, z).normalized();
-        return d;
-    }();
-    return directions;
-}
-
-std::size_t nearestDirection(const Vec3d& direction) {
-    const auto& directions = coverDirections();
-    std::size_t best = 0;
-    for (std::size_t k = 1; k < directions.size(); ++k)
-        if (directions[k].dot(direction) > directions[best].dot(direction))
-            best = k;
-    return best;
 }
 
 } // namespace
@@ -46,7 +18,7 @@ BubbleDynamics::BubbleDynamics(const BubbleSettings& bubbles, const SolverSettin
                                const CubicSplineKernel& kernel)
     : settings_(bubbles), restDensity_(solver.restDensity), spacing_(solver.particleSpacing),
       support_(kernel.supportRadius()), gravity_(solver.gravity), kernel_(kernel),
-      factory_(bubbles, solver, kernel),
+      immersion_(solver.particleSpacing), factory_(bubbles, solver, kernel),
       pairs_(bubbles.approachRestitution, bubbles.overlapRestitution) {}
 
 void BubbleDynamics::syncBodies(std::vector<RigidBody>& bodies, std::size_t first,
@@ -126,12 +98,12 @@ BubbleSurroundings BubbleDynamics::measureOne(const RigidBody& body, double radi
     // as squared distances from the centre: only the few touching particles need a square root.
     const float outer2 = square(float(radius + 2.0 * support_));
     const float ambient2 = square(float(radius + support_));
-    const float touching2 = square(float(radius + 1.5 * spacing_)); // water rests a spacing out
+    const float touching2 = square(float(immersion_.reach(radius)));
     const Vec3f c = centre.cast<float>();
     const float* px = positions.x.data();
     const float* py = positions.y.data();
     const float* pz = positions.z.data();
-    std::array<bool, 14> wet{};
+    BubbleImmersion::WetProbes wet;
     std::size_t ambientCount = 0;
     Vec3d ambientSum = Vec3d::Zero();
     BubbleSurroundings result;
@@ -158,17 +130,15 @@ BubbleSurroundings BubbleDynamics::measureOne(const RigidBody& body, double radi
         });
     result.waterVelocity =
         ambientCount > 0 ? Vec3d(ambientSum / double(ambientCount)) : body.linearVelocity();
-    result.wettedShare = double(std::count(wet.begin(), wet.end(), true)) / double(wet.size());
-    const Vec3d up = gravity_.squaredNorm() > 0.0 ? Vec3d(-gravity_.normalized()) : Vec3d::UnitY();
-    result.floating = !wet[nearestDirection(up)];
+    result.wettedShare = double(wet.count()) / double(BubbleImmersion::kProbeCount);
+    result.floating = result.placement() == BubbleImmersion::Placement::Floating;
     return result;
 }
 
 double BubbleDynamics::touchingWater(const RigidBody& body, double radius, const Vec3f& position,
-                                     const Vec3f& velocity, std::array<bool, 14>& wet) const {
-    const Vec3d offset = position.cast<double>() - body.position();
-    const Vec3d outward = offset.normalized();
-    wet[nearestDirection(outward)] = true;
+                                     const Vec3f& velocity, BubbleImmersion::WetProbes& wet) const {
+    immersion_.wetBy(body.position(), radius, position.cast<double>(), wet);
+    const Vec3d outward = (position.cast<double>() - body.position()).normalized();
     const Vec3d surfacePoint = body.position() + radius * outward;
     return -(velocity.cast<double>() - body.velocityAt(surfacePoint)).dot(outward);
 }
@@ -183,13 +153,15 @@ void BubbleDynamics::applyForces(std::vector<RigidBody>& bodies, std::size_t fir
         RigidBodyState state = body.state();
         const double radius = radii_[k];
         const double stokesDrag = 6.0 * kPi * restDensity_ * settings_.kinematicViscosity * radius;
-        const double rate = stokesDrag * body.inertia().inverseMass() + settings_.drag;
+        // On the immersed part only: the share of the surface in water.
+        const double immersed = around.wettedShare;
+        const double rate = immersed * (stokesDrag * body.inertia().inverseMass() + settings_.drag);
         // Implicit: v' = v + Δt·rate·(ū − v') stays between v and ū for any step.
         Vec3d velocity =
             (state.linearVelocity + rate * dt * around.waterVelocity) / (1.0 + rate * dt);
-        if (steer && !around.floating) {
+        if (steer && immersed > 0.0) {
             const double target = around.waterVelocity.dot(up) + riseSpeed(radius);
-            const double relax = dt / settings_.riseTime;
+            const double relax = immersed * dt / settings_.riseTime;
             const double startSpeed = start.at(k).body.linearVelocity.dot(up);
             const double steered = (startSpeed + relax * target) / (1.0 + relax);
             velocity += (steered - velocity.dot(up)) * up;

@@ -6,11 +6,13 @@
 //    gives a light body its buoyancy by itself, but how fast a sphere a few particles across
 //    rises through SPH water depends on the resolution; the steering replaces the step's
 //    vertical change with a relaxation toward the target over the rise time τ, so the rise
-//    meets the target whatever the resolution. A floating bubble is not steered: it rests on
-//    its buoyancy.
+//    meets the target whatever the resolution.
 //  - the drag of eq. 6, F = −(μ + k)Δv against the water's velocity around it, with the Stokes
 //    drag 6πρ₀νR for μ and k = drag rate × mass, integrated implicitly: explicit drag on a body
 //    this light is unstable.
+//  Both act on the immersed part only: they are scaled by the share of the bubble's surface in
+//  water (BubbleImmersion's probes), so a bubble breaking the surface is no longer pulled up by
+//  water that is not there, and one in the air feels neither.
 //  - bubble–bubble impulses with non-positive restitution (BubblePairImpulse).
 // The bubbles' bodies sit at the end of the solver's body list, from index `first` on.
 #include "bubbles/BubbleBodyFactory.h"
@@ -68,10 +70,10 @@ private:
     bool sameBubbles(const std::vector<BubbleState>& bubbles) const;
     BubbleSurroundings measureOne(const RigidBody& body, double radius, const ParticleSet& fluid,
                                   const PositionArrays& positions, const NeighborGrid& grid) const;
-    //! Marks the cover direction of a water particle touching the bubble and returns how fast it
-    //! approaches the bubble's surface.
+    //! Marks the probes a water particle near the bubble wets and returns how fast it approaches
+    //! the bubble's surface.
     double touchingWater(const RigidBody& body, double radius, const Vec3f& position,
-                         const Vec3f& velocity, std::array<bool, 14>& wet) const;
+                         const Vec3f& velocity, BubbleImmersion::WetProbes& wet) const;
 
     BubbleSettings settings_;
     double restDensity_;
@@ -79,6 +81,7 @@ private:
     float support_;
     Vec3d gravity_;
     CubicSplineKernel kernel_;
+    BubbleImmersion immersion_;
     BubbleBodyFactory factory_;
     BubblePairImpulse pairs_;
     std::vector<std::uint32_t> bodyIds_; //!< id of the bubble of each body from `first` on

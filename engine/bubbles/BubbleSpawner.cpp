@@ -28,7 +28,9 @@ private:
 
 BubbleSpawner::BubbleSpawner(const BubbleSettings& settings, double spacing, std::uint64_t seed)
     : settings_(settings), spacing_(spacing), seed_(seed),
-      fitter_(spacing, settings.minRadius * spacing) {}
+      fitter_(spacing, settings.minRadius * spacing), immersion_(spacing),
+      upperProbes_(BubbleImmersion::hemisphere(Vec3d::UnitY())),
+      minWetProbes_(int(std::ceil(settings.minWaterShare * BubbleImmersion::kProbeCount - 1e-9))) {}
 
 std::size_t BubbleSpawner::spawn(SimulationState& state, const Water& water,
                                  const std::vector<const RigidBody*>& solids, int frame,
@@ -132,10 +134,20 @@ BubbleSpawner::candidates(const std::vector<AirPocket>& pockets, const Water& wa
             bubble->radius =
                 std::min(bubble->radius, body->signedDistance(bubble->centre) - 0.5 * spacing_);
         }
-        if (bubble->radius >= settings_.minRadius * spacing_)
+        if (bubble->radius >= settings_.minRadius * spacing_ && underWater(*bubble, water))
             fitted.push_back(*bubble);
     }
     return fitted;
+}
+
+bool BubbleSpawner::underWater(const FittedBubble& bubble, const Water& water) const {
+    const BubbleImmersion::WetProbes wet =
+        immersion_.measure(bubble.centre, bubble.radius, water.grid, water.positions);
+    return coveredFromAbove(wet) && int(wet.count()) >= minWetProbes_;
+}
+
+bool BubbleSpawner::coveredFromAbove(const BubbleImmersion::WetProbes& wet) const {
+    return (wet & upperProbes_).count() >= 3;
 }
 
 Vec3d BubbleSpawner::surroundingVelocity(const FittedBubble& bubble, const Water& water) const {

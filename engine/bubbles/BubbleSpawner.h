@@ -1,10 +1,15 @@
 #pragma once
 // Creates bubbles in the air pockets the water encloses (paper §3.4, DESIGN §4 "Creation"):
 // finds the pockets on the step's neighbour grid (cells inside a rigid body or an existing bubble
-// are not air), fits a bubble to each, and turns up to a given number of them, chosen at random
-// with the scene's seed and the step count, into bubbles moving with the water around them.
+// are not air), fits a bubble to each, keeps those under water, and turns up to a given number of
+// them, chosen at random with the scene's seed and the step count, into bubbles moving with the
+// water around them. Under water means that the water covers the bubble's top and wets at least
+// `bubbles.min_water_share` of BubbleImmersion's 26 probes around it: the grid's cells are two
+// spacings wide, so the sparse spray of a splash's crown encloses "pockets" that are open air
+// between droplets; a bubble made there would be out of the water at once.
 #include "bubbles/AirPocketFinder.h"
 #include "bubbles/BubbleFitter.h"
+#include "bubbles/BubbleImmersion.h"
 #include "rigid/RigidBody.h"
 #include "scene/Scene.h"
 #include "sim/SimulationState.h"
@@ -45,6 +50,10 @@ private:
     //! The fitted bubbles that keep half a spacing from every body, as candidates.
     std::vector<FittedBubble> candidates(const std::vector<AirPocket>& pockets, const Water& water,
                                          const std::vector<const RigidBody*>& solids) const;
+    //! Whether the fitted bubble is under water (see the top of this file).
+    bool underWater(const FittedBubble& bubble, const Water& water) const;
+    //! Whether the water closes over the bubble: enough of its upper probes are wet.
+    bool coveredFromAbove(const BubbleImmersion::WetProbes& wet) const;
     //! The mean velocity of the water within one support radius of the bubble's surface.
     Vec3d surroundingVelocity(const FittedBubble& bubble, const Water& water) const;
 
@@ -53,8 +62,11 @@ private:
     std::uint64_t seed_;
     AirPocketFinder finder_;
     BubbleFitter fitter_;
-    std::vector<std::uint8_t> staticSolid_; //!< per grid cell: reaches into a static body
-    std::vector<std::uint8_t> solid_;       //!< the same with moving bodies and bubbles
+    BubbleImmersion immersion_;
+    BubbleImmersion::WetProbes upperProbes_; //!< the probes above a bubble's equator
+    int minWetProbes_;                       //!< wet probes a new bubble needs
+    std::vector<std::uint8_t> staticSolid_;  //!< per grid cell: reaches into a static body
+    std::vector<std::uint8_t> solid_;        //!< the same with moving bodies and bubbles
 };
 
 } // namespace airtrap

@@ -3,7 +3,10 @@
 // particles within two support radii of its surface. Measured every few steps
 // (BubbleDynamics::kMeasureInterval) and kept in the cache with the bubble, so that a resumed
 // bake holds the same measure as one that ran on.
+#include "bubbles/BubbleImmersion.h"
 #include "core/Math.h"
+
+#include <cmath>
 
 namespace airtrap {
 
@@ -14,13 +17,17 @@ struct BubbleSurroundings {
     Vec3d waterVelocity = Vec3d::Zero();
     //! m/s, the fastest water particle touching the bubble approaches its surface.
     double impactSpeed = 0.0;
-    //! Share of directions around the bubble with water against its surface.
+    //! Share of BubbleImmersion's 26 probes around the bubble that water wets: the share of its
+    //! surface in water.
     double wettedShare = 0.0;
-    //! The water does not cover its top: the bubble floats at the free surface.
+    //! 7–12 of the probes wet: the bubble floats at the free surface.
     bool floating = false;
     //! False until the bubble's first measure: a new bubble, or one read from a frame written
     //! before the surroundings were cached.
     bool measured = false;
+
+    int wetProbes() const { return int(std::lround(wettedShare * BubbleImmersion::kProbeCount)); }
+    BubbleImmersion::Placement placement() const { return BubbleImmersion::placement(wetProbes()); }
 
     bool operator==(const BubbleSurroundings& other) const = default;
 };

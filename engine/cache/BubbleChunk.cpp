@@ -8,13 +8,13 @@ namespace airtrap {
 namespace {
 
 void writeDeletions(ByteWriter& out, const BubbleTally& tally) {
-    for (std::uint64_t count : tally.deleted)
-        out.u64(count);
+    for (int rule = 0; rule < BubbleChunk::kStoredRules; ++rule)
+        out.u64(tally.deleted[rule]);
 }
 
 void readDeletions(ByteReader& in, BubbleTally& tally) {
-    for (std::uint64_t& count : tally.deleted)
-        count = in.u64();
+    for (int rule = 0; rule < BubbleChunk::kStoredRules; ++rule)
+        tally.deleted[rule] = in.u64();
 }
 
 } // namespace

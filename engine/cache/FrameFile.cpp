@@ -1,6 +1,7 @@
 #include "cache/FrameFile.h"
 
 #include "cache/BubbleChunk.h"
+#include "cache/BubbleSurfacedChunk.h"
 #include "cache/BubbleSurroundingsChunk.h"
 #include "cache/ByteReader.h"
 #include "cache/ByteWriter.h"
@@ -98,6 +99,9 @@ void writeBubbleChunk(ByteWriter& out, const SimulationState& state, const Frame
     const std::size_t at = beginChunk(out, BubbleChunk::kTag);
     BubbleChunk::write(out, state.bubbles, state.nextBubbleId, state.bubblesDeleted, stats.bubbles);
     endChunk(out, at);
+    const std::size_t surfacedAt = beginChunk(out, BubbleSurfacedChunk::kTag);
+    BubbleSurfacedChunk::write(out, state.bubblesDeleted, stats.bubbles);
+    endChunk(out, surfacedAt);
 }
 
 //! Written with BUBL whenever bubbles are alive.
@@ -322,6 +326,7 @@ void readChunks(const std::vector<Chunk>& chunks, FrameData& frame, const std::s
     int statsChunks = 0;
     int bodyChunks = 0;
     int bubbleChunks = 0;
+    int surfacedChunks = 0;
     const Chunk* surroundings = nullptr;
     for (const Chunk& chunk : chunks) {
         if (chunk.tag == kStateTag) {
@@ -342,6 +347,11 @@ void readChunks(const std::vector<Chunk>& chunks, FrameData& frame, const std::s
             BubbleChunk::read(chunk.data, chunk.size, path,
                               {frame.state.bubbles, frame.state.nextBubbleId,
                                frame.state.bubblesDeleted, frame.stats.bubbles});
+        } else if (chunk.tag == BubbleSurfacedChunk::kTag) {
+            if (++surfacedChunks > 1)
+                corruptFrame(path, "more than one BSFD chunk");
+            BubbleSurfacedChunk::read(chunk.data, chunk.size, path, frame.state.bubblesDeleted,
+                                      frame.stats.bubbles);
         } else if (chunk.tag == BubbleSurroundingsChunk::kTag) {
             if (surroundings)
                 corruptFrame(path, "more than one BSUR chunk");

@@ -44,6 +44,17 @@ std::vector<BoundParameter> creationParameters() {
                             .help = "At most this many pockets, chosen at random with the "
                                     "scene's seed, become bubbles in each frame."},
                            &BubbleSettings::maxNewPerFrame),
+        bind<BubbleAccess>({.key = "min_water_share",
+                            .label = "Water around a new bubble",
+                            .minimum = 0.5,
+                            .maximum = 1.0,
+                            .defaultValue = 0.5,
+                            .help = "A pocket becomes a bubble only under water: the water must "
+                                    "cover its top and at least this share of the 26 probes "
+                                    "around the bubble (docs/METHOD.md, \"Creation\"). Lower "
+                                    "lets pockets in a splash's crown, half in air, make bubbles "
+                                    "that leave the water at once."},
+                           &BubbleSettings::minWaterShare),
         bind<BubbleAccess>({.key = "pocket_interval",
                             .label = "Pocket search interval",
                             .unit = "steps",
@@ -134,8 +145,10 @@ std::vector<BoundParameter> deletionParameters() {
                             .minimum = 0.0,
                             .maximum = 1000.0,
                             .defaultValue = 0.5,
-                            .help = "A bubble at the free surface (part of it out of the water) "
-                                    "for longer than this pops (rule 2)."},
+                            .help = "A bubble floating at the free surface (water against a "
+                                    "quarter to a half of it) for longer than this pops (rule 2). "
+                                    "One with less water around it has left the water and pops "
+                                    "at once (surfaced)."},
                            &BubbleSettings::maxFloatingTime),
         bind<BubbleAccess>({.key = "max_overlap",
                             .label = "Maximum overlap",
@@ -166,7 +179,7 @@ SchemaSection bubblesSection() {
     return objectSection("bubbles", "Bubbles",
                          "Trapped air bubbles: light spheres created where the water encloses "
                          "air, rising toward their Stokes speed and deleted by age, time at the "
-                         "surface, overlap or impact (paper §3.2–3.4).",
+                         "surface, overlap, impact, or on leaving the water (paper §3.2–3.4).",
                          std::move(parameters));
 }
 

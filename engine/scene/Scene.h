@@ -110,6 +110,7 @@ struct BubbleSettings {
     double densityRatio = 0.1;          //!< bubble density / water density (paper: 0.1)
     double minRadius = 1.0;             //!< particle spacings; smaller pockets make no bubble
     int maxNewPerFrame = 5;             //!< bubbles created per frame at most
+    double minWaterShare = 0.5;         //!< share of a new bubble's 26 probes that must be wet
     int pocketInterval = 10;            //!< steps between air-pocket searches
     double kinematicViscosity = 1.0e-6; //!< m²/s, ν of water in the Stokes speed (eq. 5)
     double maxRiseSpeed = 0.25;         //!< m/s, cap of the Stokes speed

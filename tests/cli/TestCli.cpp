@@ -199,8 +199,10 @@ private Q_SLOTS:
         const nlohmann::json& bubbles = info.at("bubbles");
         QCOMPARE(bubbles.at("count").get<int>(), 0);
         QCOMPARE(bubbles.at("created_total").get<int>(), 0);
-        QCOMPARE(bubbles.at("deleted_total"),
-                 nlohmann::json({{"age", 0}, {"floating", 0}, {"overlap", 0}, {"impact", 0}}));
+        QCOMPARE(
+            bubbles.at("deleted_total"),
+            nlohmann::json(
+                {{"age", 0}, {"floating", 0}, {"overlap", 0}, {"impact", 0}, {"surfaced", 0}}));
         QCOMPARE(bubbles.at("items"), nlohmann::json::array());
 
         const CliResult second = runCli(args({"info", cache_, "--frame", "2", "--json"}));
@@ -219,9 +221,9 @@ private Q_SLOTS:
         frame.state.bubbles = {bubbleAt(3, Vec3d(0.1, 0.08, 0.12), 0.02, Vec3d(0, 0.05, 0), 0.03),
                                bubbleAt(4, Vec3d(0.05, 0.1, 0.1), 0.015, Vec3d(0.01, 0, 0), 0.0)};
         frame.state.nextBubbleId = 5;
-        frame.state.bubblesDeleted.deleted = {1, 1, 0, 1};
+        frame.state.bubblesDeleted.deleted = {1, 1, 0, 1, 0};
         frame.stats.bubbles.created = 1;
-        frame.stats.bubbles.deleted = {0, 1, 0, 0};
+        frame.stats.bubbles.deleted = {0, 1, 0, 0, 0};
         cache.writeFrame(frame.state, frame.stats);
 
         const CliResult result = runCli(args({"info", cache_, "--json"}));
@@ -230,11 +232,15 @@ private Q_SLOTS:
             nlohmann::json::parse(result.out.toStdString()).at("bubbles");
         QCOMPARE(bubbles.at("count").get<int>(), 2);
         QCOMPARE(bubbles.at("created_total").get<int>(), 5);
-        QCOMPARE(bubbles.at("deleted_total"),
-                 nlohmann::json({{"age", 1}, {"floating", 1}, {"overlap", 0}, {"impact", 1}}));
+        QCOMPARE(
+            bubbles.at("deleted_total"),
+            nlohmann::json(
+                {{"age", 1}, {"floating", 1}, {"overlap", 0}, {"impact", 1}, {"surfaced", 0}}));
         QCOMPARE(bubbles.at("created_in_frame").get<int>(), 1);
-        QCOMPARE(bubbles.at("deleted_in_frame"),
-                 nlohmann::json({{"age", 0}, {"floating", 1}, {"overlap", 0}, {"impact", 0}}));
+        QCOMPARE(
+            bubbles.at("deleted_in_frame"),
+            nlohmann::json(
+                {{"age", 0}, {"floating", 1}, {"overlap", 0}, {"impact", 0}, {"surfaced", 0}}));
         const nlohmann::json& items = bubbles.at("items");
         QCOMPARE(items.size(), std::size_t(2));
         QCOMPARE(items[0].at("id").get<int>(), 3);
@@ -249,17 +255,17 @@ private Q_SLOTS:
         const CliResult text = runCli(args({"info", cache_}));
         QCOMPARE_EXIT(text, 0);
         QVERIFY_CONTAINS(text.out, "bubbles 2 alive, 5 created, 3 deleted "
-                                   "(age 1, floating 1, overlap 0, impact 1)");
+                                   "(age 1, floating 1, overlap 0, impact 1, surfaced 0)");
     }
 
     void progressLineCountsTheAliveBubbles() {
         const std::string scene = writeScene("bubbles.json", tinyBubbleSceneText(4));
         QCOMPARE_EXIT(runCli(args({"bake", scene, "--out", cache_, "--frames", ":2"})), 0);
-        // Two bubbles in the air above the water at the end of frame 2; the bake resumes there.
+        // Two bubbles in the water at the end of frame 2; the bake resumes there.
         FrameCache cache = FrameCache::open(cache_);
         FrameData frame = cache.readFrame(2);
-        frame.state.bubbles = {bubbleAt(0, Vec3d(0.08, 0.3, 0.08), 0.03, Vec3d::Zero(), 0.0),
-                               bubbleAt(1, Vec3d(0.22, 0.3, 0.22), 0.03, Vec3d::Zero(), 0.0)};
+        frame.state.bubbles = {bubbleAt(0, Vec3d(0.07, 0.07, 0.07), 0.03, Vec3d::Zero(), 0.0),
+                               bubbleAt(1, Vec3d(0.14, 0.07, 0.14), 0.03, Vec3d::Zero(), 0.0)};
         frame.state.nextBubbleId = 2;
         cache.writeFrame(frame.state, frame.stats);
 

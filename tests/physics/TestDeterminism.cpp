@@ -52,7 +52,8 @@ Scene splashWithBubbles() {
     Scene scene = splash();
     scene.bubbles.enabled = true;
     scene.bubbles.pocketInterval = 3;
-    scene.bubbles.maxFloatingTime = 0.02; // so that deletions happen within the run
+    scene.bubbles.maxFloatingTime = 0.02;
+    scene.bubbles.maxAge = 0.05; // so that deletions happen within the run
     return scene;
 }
 

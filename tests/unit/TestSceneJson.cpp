@@ -42,6 +42,7 @@ private Q_SLOTS:
         QTest::newRow("dam_break") << "dam_break.json";
         QTest::newRow("hydrostatic") << "hydrostatic.json";
         QTest::newRow("pouring") << "pouring.json";
+        QTest::newRow("bubble_column") << "bubble_column.json";
     }
 
     void samplesLoadAndValidate() {
