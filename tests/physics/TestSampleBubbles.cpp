@@ -3,6 +3,9 @@
 //  - samples/pouring.json: the jet traps air in the pool; the bubbles rise, pop at the surface
 //    (surfaced or floating rule), and at most 2 % of the bubble-frames are out of the water
 //    (docs/VALIDATION.md, "Where the bubbles live");
+//  - samples/bubble_column.json, at its own settings for the whole bake: the plunging jet drives
+//    air deep into the tank, and at least 90 % of the bubble-frames are in water, at most 2 %
+//    out of it;
 //  - samples/diving_bunny.json: the plunging bunny traps air in its wake, and no bubble is ever
 //    created inside the closed mesh.
 #include "core/Interrupter.h"
@@ -73,6 +76,30 @@ private Q_SLOTS:
         QVERIFY(where.booksBalance);
         QVERIFY2(where.bubbleFrames >= 50, "too few bubble-frames to judge where bubbles live");
         QVERIFY2(where.airborneShare() <= 0.02, "bubbles live out of the water");
+    }
+
+    void bubbleColumnKeepsItsBubblesInWater() {
+        const Scene scene =
+            readSceneFile(std::string(AIRTRAP_SOURCE_DIR "/samples/") + "bubble_column.json");
+        Simulation simulation(scene);
+        BubbleCensus census(scene);
+        Interrupter never;
+        while (simulation.frame() < scene.frames.endFrame) {
+            simulation.advanceFrame(never);
+            census.add(FrameData{simulation.state(), simulation.lastFrameStats()});
+        }
+        const BubbleCensusTotals& where = census.totals();
+        qInfo("%llu bubbles made, %llu bubble-frames: in water %.1f %%, floating %.1f %%, "
+              "airborne %.1f %%; rise in water %.3f m/s of %.3f",
+              (unsigned long long)where.created, (unsigned long long)where.bubbleFrames,
+              100.0 * where.inWaterShare(), 100.0 * where.floatingShare(),
+              100.0 * where.airborneShare(), where.meanRiseSpeedInWater, where.meanTargetRiseSpeed);
+        QVERIFY(where.booksBalance);
+        QVERIFY2(where.bubbleFrames >= 100, "too few bubble-frames to judge where bubbles live");
+        QVERIFY2(where.inWaterShare() >= 0.9, "fewer than 90 % of the bubble-frames in water");
+        QVERIFY2(where.airborneShare() <= 0.02, "more than 2 % of the bubble-frames airborne");
+        // Rising, not drifting: within 25 % of the capped Stokes speed on average.
+        QVERIFY(where.meanRiseSpeedInWater > 0.75 * where.meanTargetRiseSpeed);
     }
 
     void divingBunnyTrapsAirInItsWakeNotInside() {

@@ -15,7 +15,7 @@ namespace airtrap {
 namespace {
 
 //! A frame at the end of which `alive` bubbles exist, `created` have been made so far and
-//! `deleted` (age, floating, overlap, impact) have gone.
+//! `deleted` (age, floating, overlap, impact, surfaced) have gone.
 FrameData frameWithBubbles(int alive, std::uint32_t created,
                            const std::array<std::uint64_t, BubbleTally::RuleCount>& deleted) {
     FrameData frame;
@@ -43,10 +43,10 @@ private Q_SLOTS:
         StatusBarFields fields(&bar);
         QVERIFY(fields.bubblesField()->isHidden());
 
-        fields.showFrame(12, frameWithBubbles(12, 30, {2, 10, 5, 1}));
+        fields.showFrame(12, frameWithBubbles(12, 37, {2, 10, 5, 1, 7}));
         QCOMPARE(fields.bubblesField()->text(),
-                 QStringLiteral("Bubbles 12 · created 30 · deleted 18 "
-                                "(age 2, floating 10, overlap 5, impact 1)"));
+                 QStringLiteral("Bubbles 12 · created 37 · deleted 25 "
+                                "(age 2, floating 10, overlap 5, impact 1, surfaced 7)"));
         QVERIFY(!fields.bubblesField()->isHidden());
         QCOMPARE(fields.frameField()->text(), QStringLiteral("Frame 12"));
     }
@@ -54,10 +54,10 @@ private Q_SLOTS:
     void bubblesThatAreAllGoneStillShow() {
         QStatusBar bar;
         StatusBarFields fields(&bar);
-        fields.showFrame(40, frameWithBubbles(0, 3, {0, 3, 0, 0}));
+        fields.showFrame(40, frameWithBubbles(0, 3, {0, 3, 0, 0, 0}));
         QCOMPARE(fields.bubblesField()->text(),
                  QStringLiteral("Bubbles 0 · created 3 · deleted 3 "
-                                "(age 0, floating 3, overlap 0, impact 0)"));
+                                "(age 0, floating 3, overlap 0, impact 0, surfaced 0)"));
         QVERIFY(!fields.bubblesField()->isHidden());
     }
 

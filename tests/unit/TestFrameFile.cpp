@@ -346,10 +346,12 @@ private Q_SLOTS:
         state.bodies = threeBodies();
         state.bubbles = twoBubbles();
         state.nextBubbleId = 17;
-        state.bubblesDeleted.deleted = {4, 5, 2, 4};
+        state.bubblesDeleted.deleted = {4, 5, 2, 4, 7};
+        state.bubblesDeleted.surfacedYoung = 3;
         FrameStats stats = randomStats(9);
         stats.bubbles.created = 3;
-        stats.bubbles.deleted = {1, 0, 2, 0};
+        stats.bubbles.deleted = {1, 0, 2, 0, 2};
+        stats.bubbles.surfacedYoung = 1;
         const std::vector<std::uint8_t> bytes = encodeFrame(state, stats);
         const FrameData decoded = decodeFrame(bytes, kPath);
         QVERIFY(decoded.state == state);
@@ -369,6 +371,33 @@ private Q_SLOTS:
         std::memcpy(&length, bytes.data() + surroundingsAt + 4, 8);
         QCOMPARE(length, std::uint64_t(4 + 2 * 42));
         QVERIFY(std::signbit(decoded.state.bubbles[1].surroundings.waterVelocity.y()));
+        // BSFD beside BUBL: the surfaced counts so far and in the frame, 32 bytes.
+        const std::size_t surfacedAt = chunkOffset(bytes, "BSFD");
+        QVERIFY(surfacedAt < bytes.size());
+        std::memcpy(&length, bytes.data() + surfacedAt + 4, 8);
+        QCOMPARE(length, std::uint64_t(32));
+        QCOMPARE(decoded.state.bubblesDeleted.deleted[BubbleTally::Surfaced], std::uint64_t(7));
+        QCOMPARE(decoded.stats.bubbles.surfacedYoung, std::uint64_t(1));
+    }
+
+    void framesWithoutSurfacedCountsReadAsNone() {
+        SimulationState state = randomState(9, 4, 3);
+        state.bubbles = twoBubbles();
+        state.nextBubbleId = 9;
+        state.bubblesDeleted.deleted = {1, 2, 0, 1, 5};
+        const std::vector<std::uint8_t> bytes = encodeFrame(state, FrameStats{});
+        const FrameData older = decodeFrame(withoutChunk(bytes, chunkOffset(bytes, "BSFD")), kPath);
+        QCOMPARE(older.state.bubblesDeleted.deleted[BubbleTally::Surfaced], std::uint64_t(0));
+        QCOMPARE(older.state.bubblesDeleted.deleted[BubbleTally::Floating], std::uint64_t(2));
+        // A chunk of 24 bytes, one count short.
+        std::vector<std::uint8_t> damaged = bytes;
+        const std::size_t at = chunkOffset(damaged, "BSFD");
+        put<std::uint64_t>(damaged, at + 4, 24);
+        damaged.erase(damaged.begin() + std::ptrdiff_t(at + 12 + 24),
+                      damaged.begin() + std::ptrdiff_t(at + 12 + 32));
+        resealFrame(damaged);
+        const QString message = corruptMessage(damaged);
+        QVERIFY2(message.contains("chunk BSFD is 24 bytes, expected 32"), qPrintable(message));
     }
 
     void framesWithoutSurroundingsReadAsUnmeasured() {
