@@ -1,6 +1,7 @@
 // airtrap: the editor. `airtrap [scene.json]` opens the window; with --screenshot it renders one
 // frame to a PNG and exits (for the docs and for pixel tests).
 #include "viewport/ViewportWidget.h"
+#include "window/EditorSettings.h"
 #include "window/MainWindow.h"
 #include "window/ScreenshotJob.h"
 
@@ -34,6 +35,40 @@ QSize parseSize(const QString& text, bool& ok) {
     return ok ? QSize(match.captured(1).toInt(), match.captured(2).toInt()) : QSize();
 }
 
+//! `--show particles,mesh,bubbles,subgrid`: the layers listed, in any order.
+airtrap::ScreenshotRequest::Layers parseLayers(const QString& text) {
+    airtrap::ScreenshotRequest::Layers layers;
+    for (const QString& name : text.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+        const QString layer = name.trimmed();
+        if (layer == QLatin1String("particles"))
+            layers.particles = true;
+        else if (layer == QLatin1String("mesh"))
+            layers.mesh = true;
+        else if (layer == QLatin1String("bubbles"))
+            layers.bubbles = true;
+        else if (layer == QLatin1String("subgrid"))
+            layers.subgrid = true;
+        else
+            refuse(QStringLiteral("--show %1: unknown layer \"%2\"; expected a comma-separated "
+                                  "list of particles, mesh, bubbles, subgrid")
+                       .arg(text, layer));
+    }
+    return layers;
+}
+
+airtrap::ViewportWidget::CameraView parseCamera(const QString& text) {
+    using View = airtrap::ViewportWidget::CameraView;
+    if (text == QLatin1String("front"))
+        return View::Front;
+    if (text == QLatin1String("side"))
+        return View::Side;
+    if (text == QLatin1String("top"))
+        return View::Top;
+    if (text == QLatin1String("persp"))
+        return View::Perspective;
+    refuse(QStringLiteral("--camera %1: expected front, side, top or persp").arg(text));
+}
+
 //! Parses the command line; exits with a message on bad input (QCommandLineParser's way).
 EditorOptions parseOptions(const QApplication& app) {
     QCommandLineParser parser;
@@ -59,7 +94,20 @@ EditorOptions parseOptions(const QApplication& app) {
     const QCommandLineOption window(QStringLiteral("window"),
                                     QStringLiteral("Screenshot the whole editor window, not "
                                                    "just the viewport."));
-    parser.addOptions({scene, cache, frame, screenshot, size, window});
+    const QCommandLineOption show(
+        QStringLiteral("show"),
+        QStringLiteral("Screenshot layers, comma-separated: particles, mesh, bubbles, subgrid "
+                       "(default: the mesh once post has made it, else the particles; and the "
+                       "bubbles)."),
+        QStringLiteral("layers"));
+    const QCommandLineOption camera(
+        QStringLiteral("camera"),
+        QStringLiteral("Screenshot camera: front, side, top or persp (default persp)."),
+        QStringLiteral("view"));
+    const QCommandLineOption noSelection(
+        QStringLiteral("no-selection"),
+        QStringLiteral("Draw no selection (screenshots never draw one; accepted for scripts)."));
+    parser.addOptions({scene, cache, frame, screenshot, size, window, show, camera, noSelection});
     parser.process(app);
 
     EditorOptions options;
@@ -71,6 +119,10 @@ EditorOptions parseOptions(const QApplication& app) {
     request.cacheDir = parser.value(cache);
     request.outputPath = parser.value(screenshot);
     request.wholeWindow = parser.isSet(window);
+    if (parser.isSet(show))
+        request.layers = parseLayers(parser.value(show));
+    if (parser.isSet(camera))
+        request.camera = parseCamera(parser.value(camera));
     if (parser.isSet(frame)) {
         bool ok = false;
         request.frame = parser.value(frame).toInt(&ok);
@@ -116,6 +168,9 @@ int main(int argc, char* argv[]) {
     QApplication::setApplicationName(QStringLiteral("Airtrap"));
     QApplication::setApplicationVersion(QStringLiteral(AIRTRAP_VERSION));
     const EditorOptions options = parseOptions(app);
+    // A screenshot neither reads nor writes the user's settings (view options, recent files).
+    if (options.takeScreenshot)
+        airtrap::EditorSettings::useScratchStore();
 
     airtrap::MainWindow window;
     if (options.takeScreenshot)

@@ -5,6 +5,7 @@
 
 #include <QImage>
 #include <QProcess>
+#include <QSettings>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -17,8 +18,10 @@ struct Run {
     QString err;
 };
 
-Run runEditor(const QStringList& arguments) {
+Run runEditor(const QStringList& arguments,
+              const QProcessEnvironment& environment = QProcessEnvironment::systemEnvironment()) {
     QProcess process;
+    process.setProcessEnvironment(environment);
     process.start(QStringLiteral(AIRTRAP_BINARY_DIR "/bin/airtrap"), arguments);
     Run run;
     if (!process.waitForStarted(10000) || !process.waitForFinished(120000)) {
@@ -101,6 +104,75 @@ private Q_SLOTS:
                                    QStringLiteral("--window")});
         QVERIFY2(run.exitCode == 0, qPrintable(run.err));
         QCOMPARE(QImage(png).size(), QSize(1200, 800));
+    }
+
+    void layersAndCameraComeFromTheFlags() {
+        const auto shot = [&](const QString& name, const QStringList& extra) {
+            const QString png = folder_.filePath(name);
+            const Run run = runEditor(QStringList{QStringLiteral("--scene"), scenePath_,
+                                                  QStringLiteral("--frame"), QStringLiteral("3"),
+                                                  QStringLiteral("--screenshot"), png,
+                                                  QStringLiteral("--size"),
+                                                  QStringLiteral("480x320")} +
+                                      extra);
+            return run.exitCode == 0 ? QImage(png) : QImage();
+        };
+        const QImage particles = shot(QStringLiteral("particles.png"),
+                                      {QStringLiteral("--show"), QStringLiteral("particles")});
+        const QImage bubblesOnly = shot(QStringLiteral("bubbles.png"),
+                                        {QStringLiteral("--show"), QStringLiteral("bubbles")});
+        QVERIFY(!particles.isNull() && !bubblesOnly.isNull());
+        QVERIFY(waterPixels(particles) > particles.width() * particles.height() / 100);
+        QVERIFY(waterPixels(bubblesOnly) < bubblesOnly.width() * bubblesOnly.height() / 500);
+        // The water column seen from the front and from the top covers different pixels.
+        const QImage front = shot(QStringLiteral("front.png"),
+                                  {QStringLiteral("--camera"), QStringLiteral("front")});
+        const QImage top = shot(QStringLiteral("top.png"),
+                                {QStringLiteral("--camera"), QStringLiteral("top"),
+                                 QStringLiteral("--no-selection")});
+        QVERIFY(!front.isNull() && !top.isNull());
+        QVERIFY(front != top);
+
+        Run run = runEditor({scenePath_, QStringLiteral("--screenshot"),
+                             folder_.filePath(QStringLiteral("x.png")), QStringLiteral("--show"),
+                             QStringLiteral("mesh,foam")});
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY2(run.err.contains(QStringLiteral("\"foam\"")), qPrintable(run.err));
+        run = runEditor({scenePath_, QStringLiteral("--screenshot"),
+                         folder_.filePath(QStringLiteral("x.png")), QStringLiteral("--camera"),
+                         QStringLiteral("under")});
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY2(run.err.contains(QStringLiteral("--camera under")), qPrintable(run.err));
+    }
+
+    void neitherReadsNorWritesTheUsersSettings() {
+        // A user who hid the water, with a settings file of their own.
+        QTemporaryDir config;
+        QVERIFY(config.isValid());
+        const QString file = config.filePath(QStringLiteral("Airtrap/Airtrap.conf"));
+        {
+            QSettings user(file, QSettings::IniFormat);
+            user.setValue(QStringLiteral("view/showWater"), false);
+            user.setValue(QStringLiteral("recentFiles"), QStringList{QStringLiteral("/a.json")});
+        }
+        QFile before(file);
+        QVERIFY(before.open(QIODevice::ReadOnly));
+        const QByteArray saved = before.readAll();
+        before.close();
+        QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+        environment.insert(QStringLiteral("XDG_CONFIG_HOME"), config.path());
+        const QString png = folder_.filePath(QStringLiteral("settings.png"));
+        const Run run = runEditor({QStringLiteral("--scene"), scenePath_, QStringLiteral("--frame"),
+                                   QStringLiteral("3"), QStringLiteral("--screenshot"), png,
+                                   QStringLiteral("--size"), QStringLiteral("480x320")},
+                                  environment);
+        QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+        // The water is drawn, and the file is as the user left it (no scene added to the list).
+        const QImage image(png);
+        QVERIFY(waterPixels(image) > image.width() * image.height() / 100);
+        QFile after(file);
+        QVERIFY(after.open(QIODevice::ReadOnly));
+        QCOMPARE(after.readAll(), saved);
     }
 
     void refusesBadRequests() {

@@ -398,6 +398,68 @@ private Q_SLOTS:
         QCOMPARE(countWater(viewport->grabFramebuffer()), waterPixels);
     }
 
+    void aFrameWithItsSurfaceShowsTheSurfaceNotTheParticles() {
+        const auto viewport = shownViewport();
+        QVERIFY(viewport);
+        viewport->setScene(damBreakWithSunkenBody());
+        viewport->setShowAxes(false);
+        viewport->setFrame(frameWithSunkenBubble(kSunkenBubble));
+        QVERIFY(viewport->drawsParticles());
+        const int particlePixels = countWater(viewport->grabFramebuffer());
+        QVERIFY(particlePixels > 0);
+        // A post result for the frame: a small triangle far from the water stands for its mesh.
+        auto mesh = std::make_shared<TriangleMesh>();
+        mesh->vertices = {Vec3d(0.0, 0.0, 0.0), Vec3d(0.01, 0.0, 0.0), Vec3d(0.0, 0.01, 0.0)};
+        mesh->triangles = {{0, 1, 2}};
+        viewport->setWaterSurface(mesh);
+        QVERIFY(viewport->showsWater());
+        QVERIFY(!viewport->drawsParticles());
+        QVERIFY(countWater(viewport->grabFramebuffer()) < particlePixels / 20);
+        viewport->setParticlesUnderSurface(true);
+        QVERIFY(viewport->drawsParticles());
+        viewport->setParticlesUnderSurface(false);
+        viewport->setShowSurface(false);
+        QVERIFY(viewport->drawsParticles());
+    }
+
+    void bubblesAndSelectionCanBeHidden() {
+        const auto viewport = shownViewport();
+        QVERIFY(viewport);
+        viewport->setScene(damBreakWithSunkenBody());
+        viewport->setFrame(frameWithSunkenBubble(kSunkenBubble));
+        const qreal ratio = viewport->devicePixelRatio();
+        const QPointF bubble = project(*viewport, toQt(kSunkenBubble));
+        QCOMPARE(countAround(viewport->grabFramebuffer(), bubble, 3, ratio, isBubble), 49);
+        viewport->setShowBubbles(false);
+        QCOMPARE(countAround(viewport->grabFramebuffer(), bubble, 3, ratio, isBubble), 0);
+        viewport->setShowBubbles(true);
+        // The selection is kept while hidden, and drawn again when shown.
+        viewport->setFrame(nullptr);
+        const QImage unselected = viewport->grabFramebuffer();
+        viewport->setSelection(SceneItem::elementItem("fluid_blocks", 0));
+        const QImage selected = viewport->grabFramebuffer();
+        QVERIFY(selected != unselected);
+        viewport->setShowSelection(false);
+        QCOMPARE(viewport->grabFramebuffer(), unselected);
+        viewport->setShowSelection(true);
+        QCOMPARE(viewport->grabFramebuffer(), selected);
+    }
+
+    void cameraViewsLookAlongTheAxes() {
+        const auto viewport = shownViewport();
+        QVERIFY(viewport);
+        viewport->setScene(damBreak());
+        using View = ViewportWidget::CameraView;
+        viewport->setCameraView(View::Front);
+        QVERIFY(qFuzzyCompare(viewport->camera().forward(), QVector3D(0, 0, -1)));
+        viewport->setCameraView(View::Side);
+        QVERIFY((viewport->camera().forward() - QVector3D(-1, 0, 0)).length() < 1e-5f);
+        viewport->setCameraView(View::Top);
+        QVERIFY(viewport->camera().forward().y() < -0.99f);
+        viewport->setCameraView(View::Perspective);
+        QCOMPARE(viewport->camera().pitch(), OrbitCamera().pitch());
+    }
+
     void bubblesShowThroughWaterButNotThroughBodies() {
         const auto viewport = shownViewport();
         QVERIFY(viewport);

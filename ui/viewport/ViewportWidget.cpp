@@ -85,9 +85,7 @@ void ViewportWidget::setScene(const Scene& scene) {
 
 void ViewportWidget::setSelection(const SceneItem& item) {
     selection_ = item;
-    boxes_.setSelection(item);
-    bodyDrawable_.setSelection(item);
-    update();
+    setShowSelection(showSelection_);
 }
 
 void ViewportWidget::setFrame(std::shared_ptr<const FrameData> frame) {
@@ -107,6 +105,55 @@ void ViewportWidget::placeBodies() {
 void ViewportWidget::frameAll() {
     camera_.fit(domain_, aspectRatio());
     refitOnResize_ = true;
+    update();
+}
+
+void ViewportWidget::setCameraView(CameraView view) {
+    // Pitch 0 looks level; the top view stops at the camera's ±89° so that "up" stays defined.
+    switch (view) {
+    case CameraView::Perspective:
+        camera_.setAngles(OrbitCamera().yaw(), OrbitCamera().pitch());
+        break;
+    case CameraView::Front:
+        camera_.setAngles(0.0f, 0.0f);
+        break;
+    case CameraView::Side:
+        camera_.setAngles(90.0f, 0.0f);
+        break;
+    case CameraView::Top:
+        camera_.setAngles(0.0f, 89.0f);
+        break;
+    }
+    frameAll();
+}
+
+bool ViewportWidget::drawsParticles() const {
+    // Once post has made the frame's surface, the surface is the water: particles under it would
+    // hide the bubbles inside. They come back when asked for over the surface, or when it is off.
+    const bool surfaceOnScreen = surfaceTriangleCount() > 0;
+    return showWater_ && (!surfaceOnScreen || particlesUnderSurface_);
+}
+
+void ViewportWidget::setParticlesUnderSurface(bool show) {
+    particlesUnderSurface_ = show;
+    update();
+}
+
+void ViewportWidget::setShowBubbles(bool show) {
+    showBubbles_ = show;
+    update();
+}
+
+void ViewportWidget::setShowSubgridBubbles(bool show) {
+    showSubgridBubbles_ = show;
+    update();
+}
+
+void ViewportWidget::setShowSelection(bool show) {
+    showSelection_ = show;
+    const SceneItem drawn = show ? selection_ : SceneItem::none();
+    boxes_.setSelection(drawn);
+    bodyDrawable_.setSelection(drawn);
     update();
 }
 
@@ -249,7 +296,7 @@ void ViewportWidget::paintGL() {
     }
     drawScene();
     // The legend explains the water's colours: without water it explains nothing.
-    if (isPlayback() && showWater_) {
+    if (isPlayback() && drawsParticles()) {
         paintLegend();
     }
 }
@@ -290,14 +337,16 @@ void ViewportWidget::drawSolids(const RenderContext& context) {
     // The bubbles stay opaque: blended with the water's bright speed colours a translucent sphere
     // would be hard to tell from the water, and its own colour is what the artist looks for.
     QOpenGLExtraFunctions& gl = context.gl;
-    const bool overWater = bubblesThroughWater_ && showWater_;
+    const bool overWater = bubblesThroughWater_ && drawsParticles();
     if (overWater) {
         gl.glEnable(GL_STENCIL_TEST);
         gl.glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE); // on depth pass, write the reference
         gl.glStencilFunc(GL_ALWAYS, 1, 0xFF);
     }
-    bubbleDrawable_.draw(context);
-    subgridBubbles_.draw(context);
+    if (showBubbles_)
+        bubbleDrawable_.draw(context);
+    if (showSubgridBubbles_)
+        subgridBubbles_.draw(context);
     if (overWater)
         gl.glStencilFunc(GL_ALWAYS, 0, 0xFF);
     if (hasScene_)
@@ -306,7 +355,7 @@ void ViewportWidget::drawSolids(const RenderContext& context) {
         gl.glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
         gl.glStencilFunc(GL_NOTEQUAL, 1, 0xFF);
     }
-    if (showWater_)
+    if (drawsParticles())
         particles_.draw(context);
     gl.glDisable(GL_STENCIL_TEST);
 }

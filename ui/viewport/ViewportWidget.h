@@ -76,8 +76,17 @@ public:
     SceneItem itemAt(const QPointF& position) const;
     //! Whether playback draws the water particles.
     bool showsWater() const { return showWater_; }
+    //! Whether the particles are drawn now: water shown, and no surface mesh on screen unless
+    //! particles under the surface were asked for.
+    bool drawsParticles() const;
+    //! Off (the default), a frame with a surface mesh shows the mesh and not the particles.
+    void setParticlesUnderSurface(bool show);
     //! Whether bubbles stay visible behind water (they are still hidden behind bodies).
     bool drawsBubblesThroughWater() const { return bubblesThroughWater_; }
+
+    //! Where the camera looks from: the editor's default three-quarter view, or straight at the
+    //! front (along −z), the side (along −x) or from the top (down y).
+    enum class CameraView { Perspective, Front, Side, Top };
 
 public Q_SLOTS:
     //! Copies what the view draws from `scene` and redraws. The first scene also frames the view.
@@ -89,6 +98,8 @@ public Q_SLOTS:
     void setFrame(std::shared_ptr<const airtrap::FrameData> frame);
     //! Aims the camera at the simulation domain (container plus headroom) and fits it in view.
     void frameAll();
+    //! Turns the camera to `view` and frames the domain.
+    void setCameraView(CameraView view);
     //! Shows or hides the ground grid.
     void setShowGrid(bool show);
     //! Shows or hides the world axes at the origin.
@@ -102,6 +113,12 @@ public Q_SLOTS:
     void setWaterSurface(std::shared_ptr<const airtrap::TriangleMesh> mesh);
     //! Shows these sub-grid bubbles of the shown frame with its bubbles (empty: none).
     void setSubgridBubbles(const std::vector<airtrap::SubgridBubble>& bubbles);
+    //! Shows or hides the trapped bubbles of the shown frame.
+    void setShowBubbles(bool show);
+    //! Shows or hides the sub-grid bubbles of the shown frame.
+    void setShowSubgridBubbles(bool show);
+    //! Whether the selection's gizmo is highlighted; off, the selection is kept but not drawn.
+    void setShowSelection(bool show);
     void setShowSurface(bool show);
     //! Translucent (the default) or opaque water surface.
     void setSurfaceTransparent(bool transparent);
@@ -176,6 +193,10 @@ private:
     bool showGizmos_ = true;
     bool showWater_ = true;
     bool showSurface_ = true;
+    bool particlesUnderSurface_ = false;
+    bool showBubbles_ = true;
+    bool showSubgridBubbles_ = true;
+    bool showSelection_ = true;
     bool bubblesThroughWater_ = true;
     //! Until the user navigates, a resize refits the view (the first fit may predate the layout).
     bool refitOnResize_ = false;

@@ -118,6 +118,11 @@ void EditorActions::makeViewActions() {
                                     "Render Outputs has built it")),
                             true);
     showSurface->setShortcut(QKeySequence(Qt::Key_S));
+    particlesUnderSurface =
+        checkable(make("particlesUnderSurfaceAction", tr("&Particles Under Surface"),
+                       tr("Draw the particles of a frame whose surface mesh is made; off, the "
+                          "mesh stands for the water")),
+                  false);
     transparentSurface = checkable(make("transparentSurfaceAction", tr("&Transparent Surface"),
                                         tr("See the particles, bubbles and bodies through the "
                                            "water surface; off, it is opaque")),

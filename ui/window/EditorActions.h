@@ -43,6 +43,7 @@ public:
     QAction* showGizmos;
     QAction* showWater;
     QAction* showSurface;
+    QAction* particlesUnderSurface;
     QAction* transparentSurface;
     QAction* bubblesThroughWater;
     // Playback

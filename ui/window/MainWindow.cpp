@@ -46,6 +46,7 @@ constexpr auto kSceneFilter = "Airtrap scenes (*.json);;All files (*)";
 constexpr auto kShowWaterKey = "view/showWater";
 constexpr auto kShowSurfaceKey = "view/showSurface";
 constexpr auto kTransparentSurfaceKey = "view/transparentSurface";
+constexpr auto kParticlesUnderSurfaceKey = "view/particlesUnderSurface";
 constexpr auto kBubblesThroughWaterKey = "view/bubblesThroughWater";
 
 //! Checks `action` as it was last left (its own state the first time) and stores each change as
@@ -209,7 +210,8 @@ void MainWindow::createMenus() {
     viewMenu_->addActions(
         {actions_->frameAll, actions_->showGrid, actions_->showAxes, actions_->showGizmos});
     viewMenu_->addSeparator();
-    viewMenu_->addActions({actions_->showWater, actions_->showSurface, actions_->transparentSurface,
+    viewMenu_->addActions({actions_->showWater, actions_->showSurface,
+                           actions_->particlesUnderSurface, actions_->transparentSurface,
                            actions_->bubblesThroughWater});
     viewMenu_->addSeparator();
     for (QDockWidget* dock : findChildren<QDockWidget*>())
@@ -308,16 +310,20 @@ void MainWindow::connectActions() {
     connect(actions_->showGizmos, &QAction::toggled, viewport_, &ViewportWidget::setShowGizmos);
     connect(actions_->showWater, &QAction::toggled, viewport_, &ViewportWidget::setShowWater);
     connect(actions_->showSurface, &QAction::toggled, viewport_, &ViewportWidget::setShowSurface);
+    connect(actions_->particlesUnderSurface, &QAction::toggled, viewport_,
+            &ViewportWidget::setParticlesUnderSurface);
     connect(actions_->transparentSurface, &QAction::toggled, viewport_,
             &ViewportWidget::setSurfaceTransparent);
     connect(actions_->bubblesThroughWater, &QAction::toggled, viewport_,
             &ViewportWidget::setBubblesThroughWater);
     remember(actions_->showWater, kShowWaterKey);
     remember(actions_->showSurface, kShowSurfaceKey);
+    remember(actions_->particlesUnderSurface, kParticlesUnderSurfaceKey);
     remember(actions_->transparentSurface, kTransparentSurfaceKey);
     remember(actions_->bubblesThroughWater, kBubblesThroughWaterKey);
     viewport_->setShowWater(actions_->showWater->isChecked());
     viewport_->setShowSurface(actions_->showSurface->isChecked());
+    viewport_->setParticlesUnderSurface(actions_->particlesUnderSurface->isChecked());
     viewport_->setSurfaceTransparent(actions_->transparentSurface->isChecked());
     viewport_->setBubblesThroughWater(actions_->bubblesThroughWater->isChecked());
     connect(actions_->playPause, &QAction::triggered, this,

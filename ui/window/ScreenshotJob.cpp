@@ -2,6 +2,7 @@
 
 #include "timeline/FrameLoader.h"
 #include "viewport/ViewportWidget.h"
+#include "window/EditorActions.h"
 #include "window/MainWindow.h"
 
 #include <QImage>
@@ -44,6 +45,7 @@ void ScreenshotJob::start() {
         window_.resize(request_.size);
     else
         window_.viewport()->setFixedSize(request_.size);
+    applyView();
     window_.show();
     timeout_->start(kTimeoutMs);
 }
@@ -67,6 +69,21 @@ bool ScreenshotJob::open() {
         return false;
     }
     return true;
+}
+
+void ScreenshotJob::applyView() {
+    ViewportWidget& viewport = *window_.viewport();
+    viewport.setShowSelection(false);
+    viewport.setCameraView(request_.camera);
+    if (!request_.layers)
+        return;
+    const ScreenshotRequest::Layers& show = *request_.layers;
+    const EditorActions& actions = window_.actions();
+    actions.showWater->setChecked(show.particles);
+    actions.particlesUnderSurface->setChecked(show.particles);
+    actions.showSurface->setChecked(show.mesh);
+    viewport.setShowBubbles(show.bubbles);
+    viewport.setShowSubgridBubbles(show.subgrid);
 }
 
 void ScreenshotJob::showRequestedFrame() {

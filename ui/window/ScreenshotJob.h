@@ -1,9 +1,14 @@
 #pragma once
 // `airtrap --screenshot out.png`: open a scene (and its cache), show one frame, save the viewport
 // (or the whole editor) as a PNG, and report — for the docs and for tests that look at pixels.
+// What is drawn and from where comes from the request alone, never from the user's saved view
+// options, and the selection is not drawn.
+#include "viewport/ViewportWidget.h"
+
 #include <QObject>
 #include <QSize>
 #include <QString>
+#include <optional>
 
 class QTimer;
 
@@ -18,6 +23,17 @@ struct ScreenshotRequest {
     QString outputPath; //!< PNG
     QSize size{1280, 720};
     bool wholeWindow = false; //!< the editor window instead of the viewport alone
+
+    //! What `--show` lists. Particles are drawn under a surface mesh only when listed.
+    struct Layers {
+        bool particles = false;
+        bool mesh = false;
+        bool bubbles = false;
+        bool subgrid = false;
+    };
+    //! Unset: the editor's default view (a frame with a mesh shows the mesh, else particles).
+    std::optional<Layers> layers;
+    ViewportWidget::CameraView camera = ViewportWidget::CameraView::Perspective;
 };
 
 class ScreenshotJob : public QObject {
@@ -36,6 +52,8 @@ Q_SIGNALS:
 
 private:
     bool open();
+    //! The request's layers and camera, and no selection drawn.
+    void applyView();
     void showRequestedFrame();
     void capture();
     void fail(const QString& error);
