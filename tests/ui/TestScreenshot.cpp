@@ -109,12 +109,11 @@ private Q_SLOTS:
     void layersAndCameraComeFromTheFlags() {
         const auto shot = [&](const QString& name, const QStringList& extra) {
             const QString png = folder_.filePath(name);
-            const Run run = runEditor(QStringList{QStringLiteral("--scene"), scenePath_,
-                                                  QStringLiteral("--frame"), QStringLiteral("3"),
-                                                  QStringLiteral("--screenshot"), png,
-                                                  QStringLiteral("--size"),
-                                                  QStringLiteral("480x320")} +
-                                      extra);
+            const Run run = runEditor(
+                QStringList{QStringLiteral("--scene"), scenePath_, QStringLiteral("--frame"),
+                            QStringLiteral("3"), QStringLiteral("--screenshot"), png,
+                            QStringLiteral("--size"), QStringLiteral("480x320")} +
+                extra);
             return run.exitCode == 0 ? QImage(png) : QImage();
         };
         const QImage particles = shot(QStringLiteral("particles.png"),
@@ -127,9 +126,9 @@ private Q_SLOTS:
         // The water column seen from the front and from the top covers different pixels.
         const QImage front = shot(QStringLiteral("front.png"),
                                   {QStringLiteral("--camera"), QStringLiteral("front")});
-        const QImage top = shot(QStringLiteral("top.png"),
-                                {QStringLiteral("--camera"), QStringLiteral("top"),
-                                 QStringLiteral("--no-selection")});
+        const QImage top =
+            shot(QStringLiteral("top.png"), {QStringLiteral("--camera"), QStringLiteral("top"),
+                                             QStringLiteral("--no-selection")});
         QVERIFY(!front.isNull() && !top.isNull());
         QVERIFY(front != top);
 

@@ -2,7 +2,6 @@
 // Where the editor keeps what it remembers (window layout, recent files, view options).
 #include <QSettings>
 #include <QTemporaryDir>
-
 #include <memory>
 
 namespace airtrap {
