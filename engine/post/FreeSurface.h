@@ -8,8 +8,11 @@
 
 namespace airtrap {
 
-//! `water` without every triangle that has a vertex closer than `margin` (m) to a solid or a
-//! bubble of `solids`; vertices no triangle uses any more are removed, the rest keep their order.
+//! `water` without the triangles that lie along a solid or a bubble of `solids` (all three
+//! vertices closer than `margin`, m): the other object's own surface renders there. The kept
+//! triangles' vertices within the margin are moved onto that surface, so the water meets a body
+//! at the waterline with no gap and enters none. Vertices no triangle uses any more are removed,
+//! the rest keep their order.
 TriangleMesh freeSurfaceOnly(const TriangleMesh& water, const FrameSolids& solids, double margin);
 
 } // namespace airtrap

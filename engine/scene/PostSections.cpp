@@ -54,9 +54,11 @@ SchemaSection surfaceMeshSection() {
                                  .minimum = 0.0,
                                  .maximum = 2.0,
                                  .defaultValue = 1.0,
-                                 .help = "Polygons with a corner closer than this to a body, the "
-                                         "tank or a bubble are left out (paper Fig. 2b): there "
-                                         "the other object's own surface is rendered."},
+                                 .help = "Polygons with every corner closer than this to a body, "
+                                         "the tank or a bubble are left out (paper Fig. 2b): "
+                                         "there the other object's own surface is rendered. "
+                                         "The corners of the rest that are this close are moved "
+                                         "onto it, so the water meets it with no gap."},
                                 &SurfaceMeshSettings::margin),
         });
 }
