@@ -110,7 +110,12 @@ void SequenceExporter::writeObjFiles(const FrameData& data, ExportReport& report
     const int frame = data.state.frame;
     const std::vector<std::string> notes = comments(data);
     const std::string water = sequenceFileName("water", frame, "obj");
-    ObjExporter::write(path(water), {{"water", store_.readFreeSurface(frame)}}, options_.up, notes);
+    std::vector<std::string> waterNotes = notes;
+    waterNotes.push_back(scene_.surfaceMesh.mode == "closed"
+                             ? "water mesh: closed (watertight, normals outward)"
+                             : "water mesh: free_surface (no polygons along bodies and bubbles)");
+    ObjExporter::write(path(water), {{"water", store_.readFreeSurface(frame)}}, options_.up,
+                       waterNotes);
     report.files.push_back(water);
     if (scene_.bubbles.enabled) {
         std::vector<NamedMesh> bubbles;

@@ -14,13 +14,7 @@ struct SortedWater {
     SortedWater(const Scene& scene, const std::vector<Vec3f>& particles)
         : grid(scene.domain(), float(scene.supportRadius())) {
         grid.build(particles);
-        positions.resize(grid.sortedCount());
-        for (std::size_t k = 0; k < grid.sortedCount(); ++k) {
-            const Vec3f& x = particles[grid.order()[k]];
-            positions.x[k] = x.x();
-            positions.y[k] = x.y();
-            positions.z[k] = x.z();
-        }
+        positions.gather(particles, grid.order());
     }
 };
 

@@ -69,4 +69,11 @@ TriangleMesh freeSurfaceOnly(const TriangleMesh& water, const FrameSolids& solid
     return trimmed;
 }
 
+TriangleMesh renderedSurface(const TriangleMesh& water, const FrameSolids& solids,
+                             const SurfaceMeshSettings& settings, double spacing) {
+    if (settings.mode == "closed")
+        return water;
+    return freeSurfaceOnly(water, solids, settings.margin * spacing);
+}
+
 } // namespace airtrap

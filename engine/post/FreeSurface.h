@@ -5,6 +5,7 @@
 // oscillating mesh could not show through. What remains is the free surface only.
 #include "post/FrameSolids.h"
 #include "rigid/TriangleMesh.h"
+#include "scene/Scene.h"
 
 namespace airtrap {
 
@@ -14,5 +15,10 @@ namespace airtrap {
 //! at the waterline with no gap and enters none. Vertices no triangle uses any more are removed,
 //! the rest keep their order.
 TriangleMesh freeSurfaceOnly(const TriangleMesh& water, const FrameSolids& solids, double margin);
+
+//! The water mesh that `settings.mode` asks for: the free surface of `water` (margin in
+//! spacings of `spacing` m), or `water` whole when "closed".
+TriangleMesh renderedSurface(const TriangleMesh& water, const FrameSolids& solids,
+                             const SurfaceMeshSettings& settings, double spacing);
 
 } // namespace airtrap

@@ -59,8 +59,8 @@ void PostStage::makeFrame(int frame, Interrupter& interrupter, PostReport& repor
         WaterVolume::build(data->state.fluid, spacing, scene_.surfaceMesh, &part);
     if (part.stopRequested())
         return;
-    const TriangleMesh surface = freeSurfaceOnly(water.mesh(), FrameSolids(solids_, data->state),
-                                                 scene_.surfaceMesh.margin * spacing);
+    const TriangleMesh surface = renderedSurface(water.mesh(), FrameSolids(solids_, data->state),
+                                                 scene_.surfaceMesh, spacing);
     PostFrameEntry entry{frame, source->crc32, surface.triangleCount(), secondsSince(start)};
     store_.writeFrame(entry, surface, water);
     const std::lock_guard lock(reportMutex_);

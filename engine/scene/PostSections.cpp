@@ -17,9 +17,19 @@ SchemaSection surfaceMeshSection() {
     return objectSection(
         "surface_mesh", "Surface mesh",
         "The water mesh for rendering: a level set of the particles, smoothed without losing "
-        "volume, with the polygons near bodies and bubbles left out so the free surface is all "
-        "that remains (paper §4.1).",
+        "volume, with the polygons along bodies and bubbles left out so the free surface is all "
+        "that remains (paper §4.1), or closed for refraction renders.",
         {
+            bind<SurfaceAccess>({.key = "mode",
+                                 .label = "Mesh",
+                                 .defaultValue = std::string("free_surface"),
+                                 .help = "free_surface: the paper's mesh, without the polygons "
+                                         "along bodies and bubbles, whose own surfaces render "
+                                         "there. closed: the whole watertight surface of the "
+                                         "water (no open edges, normals outward), for renderers "
+                                         "that refract through it.",
+                                 .choices = {"free_surface", "closed"}},
+                                &SurfaceMeshSettings::mode),
             bind<SurfaceAccess>({.key = "voxel_size",
                                  .label = "Voxel size",
                                  .unit = "× spacing",

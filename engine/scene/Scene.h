@@ -127,6 +127,9 @@ struct BubbleSettings {
 //! The free-surface water mesh (paper §4.1, DESIGN §4). Lengths in particle spacings, so a scene
 //! keeps its look when its resolution changes.
 struct SurfaceMeshSettings {
+    //! "free_surface" (the paper's: no polygons along bodies and bubbles) or "closed" (the whole
+    //! watertight level-set mesh, for refraction renders).
+    std::string mode = "free_surface";
     double voxelSize = 0.5;      //!< spacings per voxel of the level set (finer: more detail)
     double particleRadius = 1.0; //!< spacings; radius of the sphere each particle contributes
     int smoothing = 4;           //!< mean-curvature passes that flatten the spheres' bumps

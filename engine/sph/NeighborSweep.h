@@ -24,6 +24,17 @@ struct PositionArrays {
         z.resize(n);
     }
     Vec3f operator[](std::size_t i) const { return Vec3f(x[i], y[i], z[i]); }
+    //! Becomes `points` in the order of `order` (a NeighborGrid's sorted order): entry k is
+    //! points[order[k]].
+    void gather(const std::vector<Vec3f>& points, const std::vector<std::uint32_t>& order) {
+        resize(order.size());
+        for (std::size_t k = 0; k < order.size(); ++k) {
+            const Vec3f& p = points[order[k]];
+            x[k] = p.x();
+            y[k] = p.y();
+            z[k] = p.z();
+        }
+    }
     std::size_t allocatedBytes() const {
         return (x.capacity() + y.capacity() + z.capacity()) * sizeof(float);
     }

@@ -499,9 +499,19 @@ private Q_SLOTS:
             const std::vector<std::uint8_t> obj = readBytes(out + "/water_" + digits + ".obj");
             const std::string text(obj.begin(), obj.end());
             QVERIFY(text.starts_with("# Airtrap "));
+            QVERIFY(text.find("# water mesh: free_surface") != std::string::npos);
             QVERIFY(text.find("\no water\nv ") != std::string::npos);
             QVERIFY(fs::file_size(out + "/fluid_" + digits + ".vdb") > 0);
         }
+        // The closed mode, posted again, says so in the file it writes.
+        QCOMPARE_EXIT(runCli(args({"post", cache_, "--set", "surface_mesh.mode=closed"})), 0);
+        const std::string closed = path("closed");
+        QCOMPARE_EXIT(runCli(args({"export", cache_, "--format", "obj", "--out", closed, "--set",
+                                   "surface_mesh.mode=closed"})),
+                      0);
+        const std::vector<std::uint8_t> obj = readBytes(closed + "/water_0001.obj");
+        QVERIFY(std::string(obj.begin(), obj.end()).find("# water mesh: closed") !=
+                std::string::npos);
         // The tiny scene has no bubbles and no bodies: no empty sequences for them.
         QVERIFY(!fs::exists(out + "/bubbles_0001.obj"));
         QVERIFY(!fs::exists(out + "/bodies_0001.obj"));

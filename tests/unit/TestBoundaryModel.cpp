@@ -40,13 +40,7 @@ PositionArrays sortedWater(NeighborGrid& grid, int count = 30000, unsigned seed 
         water.emplace_back(0.1f + 0.6f * u(rng), 0.05f + 0.5f * u(rng), 0.05f + 0.4f * u(rng));
     grid.build(water);
     PositionArrays sorted;
-    sorted.resize(grid.sortedCount());
-    for (std::size_t s = 0; s < grid.sortedCount(); ++s) {
-        const Vec3f& x = water[grid.order()[s]];
-        sorted.x[s] = x.x();
-        sorted.y[s] = x.y();
-        sorted.z[s] = x.z();
-    }
+    sorted.gather(water, grid.order());
     return sorted;
 }
 

@@ -31,13 +31,7 @@ void fill(Pool& pool, const Vec3d& centre, double radius) {
                     points.push_back(x.cast<float>());
             }
     pool.grid.build(points);
-    pool.sorted.resize(pool.grid.order().size());
-    for (std::size_t s = 0; s < pool.grid.order().size(); ++s) {
-        const Vec3f& x = points[pool.grid.order()[s]];
-        pool.sorted.x[s] = x.x();
-        pool.sorted.y[s] = x.y();
-        pool.sorted.z[s] = x.z();
-    }
+    pool.sorted.gather(points, pool.grid.order());
 }
 
 double nearestDistance(const Pool& pool, const Vec3d& x) {

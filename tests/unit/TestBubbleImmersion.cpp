@@ -29,13 +29,7 @@ struct LatticePool {
                         points.push_back(x.cast<float>());
                 }
         grid.build(points);
-        sorted.resize(grid.sortedCount());
-        for (std::size_t s = 0; s < grid.sortedCount(); ++s) {
-            const Vec3f& x = points[grid.order()[s]];
-            sorted.x[s] = x.x();
-            sorted.y[s] = x.y();
-            sorted.z[s] = x.z();
-        }
+        sorted.gather(points, grid.order());
     }
 };
 

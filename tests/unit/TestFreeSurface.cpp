@@ -172,6 +172,26 @@ private Q_SLOTS:
                  qPrintable(QString("free surface %1 m², expected %2 m²").arg(area).arg(expected)));
     }
 
+    void closedModeKeepsTheWholeWatertightSurface() {
+        SurfaceMeshSettings closed = settings_;
+        closed.mode = "closed";
+        const SceneSolids solids(scene_);
+        const TriangleMesh mesh =
+            renderedSurface(full_, FrameSolids(solids, state_), closed, kSpacing);
+        const TriangleMesh::EdgeCounts edges = mesh.countEdges();
+        QCOMPARE(edges.open, std::size_t(0));
+        QCOMPARE(edges.nonManifold, std::size_t(0));
+        QCOMPARE(edges.misoriented, std::size_t(0));
+        // Outward normals make the enclosed volume positive: the particles' own, within 3 %.
+        const double water = double(state_.fluid.size()) * std::pow(kSpacing, 3);
+        QVERIFY2(std::abs(mesh.signedVolume() / water - 1.0) < 0.03,
+                 qPrintable(QString("encloses %1 m³ of %2").arg(mesh.signedVolume()).arg(water)));
+        // The free-surface mode is the trimmed mesh.
+        QCOMPARE(renderedSurface(full_, FrameSolids(solids, state_), settings_, kSpacing)
+                     .triangleCount(),
+                 trimmed_.triangleCount());
+    }
+
     void aBodyIsPlacedWhereTheFrameHasIt() {
         SimulationState moved = state_;
         moved.bodies[0].position = Vec3d(0.6, 0.8, 0.4);
