@@ -147,7 +147,7 @@ bool BubbleSpawner::underWater(const FittedBubble& bubble, const Water& water) c
 }
 
 bool BubbleSpawner::coveredFromAbove(const BubbleImmersion::WetProbes& wet) const {
-    return (wet & upperProbes_).count() >= 3;
+    return int((wet & upperProbes_).count()) >= kLidProbes;
 }
 
 Vec3d BubbleSpawner::surroundingVelocity(const FittedBubble& bubble, const Water& water) const {

@@ -1,12 +1,12 @@
 #pragma once
-// Creates bubbles in the air pockets the water encloses (paper §3.4, DESIGN §4 "Creation"):
+// Creates bubbles in the air pockets the water encloses (paper §3.4, docs/METHOD.md "Creation"):
 // finds the pockets on the step's neighbour grid (cells inside a rigid body or an existing bubble
 // are not air), fits a bubble to each, keeps those under water, and turns up to a given number of
 // them, chosen at random with the scene's seed and the step count, into bubbles moving with the
-// water around them. Under water means that the water covers the bubble's top and wets at least
-// `bubbles.min_water_share` of BubbleImmersion's 26 probes around it: the grid's cells are two
-// spacings wide, so the sparse spray of a splash's crown encloses "pockets" that are open air
-// between droplets; a bubble made there would be out of the water at once.
+// water around them. Under water means that water wets at least `bubbles.min_water_share` of
+// BubbleImmersion's 26 probes around the bubble and kLidProbes of the 9 above its equator: the
+// grid's cells are two spacings wide, so the sparse spray of a splash's crown encloses "pockets"
+// that are open air between droplets; a bubble made there would be out of the water at once.
 #include "bubbles/AirPocketFinder.h"
 #include "bubbles/BubbleFitter.h"
 #include "bubbles/BubbleImmersion.h"
@@ -52,7 +52,11 @@ private:
                                          const std::vector<const RigidBody*>& solids) const;
     //! Whether the fitted bubble is under water (see the top of this file).
     bool underWater(const FittedBubble& bubble, const Water& water) const;
-    //! Whether the water closes over the bubble: enough of its upper probes are wet.
+    //! Wet probes above the equator that make a lid of water over a new bubble. Not all 9, nor
+    //! the one straight up: the cavity a plunging jet drives into deep water is a tall pocket,
+    //! and a bubble fitted in its lower part looks up into air that is still enclosed.
+    static constexpr int kLidProbes = 3;
+    //! Whether the water closes over the bubble: kLidProbes of its upper probes are wet.
     bool coveredFromAbove(const BubbleImmersion::WetProbes& wet) const;
     //! The mean velocity of the water within one support radius of the bubble's surface.
     Vec3d surroundingVelocity(const FittedBubble& bubble, const Water& water) const;
