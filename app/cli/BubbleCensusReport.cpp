@@ -48,6 +48,11 @@ BubbleCensusReport::BubbleCensusReport(const FrameCache& cache, std::ostream& no
     }
 }
 
+double BubbleCensusReport::inWaterSecondHalf() const {
+    const auto& frames = census_.frames();
+    return frames.empty() ? 0.0 : census_.meanInWaterFrom(frames.back().frame / 2 + 1);
+}
+
 nlohmann::ordered_json BubbleCensusReport::toJson() const {
     const BubbleCensusTotals& t = census_.totals();
     nlohmann::ordered_json frames = nlohmann::ordered_json::array();
@@ -72,6 +77,7 @@ nlohmann::ordered_json BubbleCensusReport::toJson() const {
         {"alive", t.alive},
         {"deleted", deletedJson(t.deleted)},
         {"surfaced_young", t.deleted.surfacedYoung},
+        {"in_water_per_frame_second_half", inWaterSecondHalf()},
         {"books_balance", t.booksBalance}};
     return {{"rule", "26 probes at r + spacing/2; wet: water within one spacing; in water >= 13 "
                      "wet, airborne < 6.5"},
@@ -100,6 +106,9 @@ void BubbleCensusReport::printText(std::ostream& out) const {
                   t.meanRiseSpeedInWater, t.meanTargetRiseSpeed, t.meanDepthAtCreation,
                   (unsigned long long)t.newInWater, (unsigned long long)t.newFloating,
                   (unsigned long long)t.newAirborne, t.meanLifetime, (unsigned long long)t.ended);
+    out << line;
+    std::snprintf(line, sizeof line, "in water per frame over the second half: %.1f\n",
+                  inWaterSecondHalf());
     out << line << "made " << t.created << " = alive " << t.alive << " + deleted "
         << t.deleted.deletedTotal() << " (";
     for (int rule = 0; rule < BubbleTally::RuleCount; ++rule)

@@ -21,6 +21,9 @@ public:
     const BubbleCensus& census() const { return census_; }
 
 private:
+    //! Mean bubbles in water per frame over frames last / 2 + 1 to last.
+    double inWaterSecondHalf() const;
+
     BubbleCensus census_;
 };
 

@@ -19,15 +19,6 @@ const std::array<Vec3d, BubbleImmersion::kProbeCount>& BubbleImmersion::directio
     return probes;
 }
 
-int BubbleImmersion::probeAlong(const Vec3d& direction) {
-    const auto& probes = directions();
-    int best = 0;
-    for (int k = 1; k < kProbeCount; ++k)
-        if (probes[k].dot(direction) > probes[best].dot(direction))
-            best = k;
-    return best;
-}
-
 BubbleImmersion::WetProbes BubbleImmersion::hemisphere(const Vec3d& up) {
     WetProbes mask;
     const auto& probes = directions();
@@ -66,18 +57,6 @@ BubbleImmersion::Placement BubbleImmersion::placement(int wetProbes) {
     if (wetProbes >= kInWaterProbes)
         return Placement::InWater;
     return wetProbes < kAirborneBelow ? Placement::Airborne : Placement::Floating;
-}
-
-const char* BubbleImmersion::name(Placement placement) {
-    switch (placement) {
-    case Placement::InWater:
-        return "in water";
-    case Placement::Floating:
-        return "floating";
-    case Placement::Airborne:
-        return "airborne";
-    }
-    return "";
 }
 
 } // namespace airtrap

@@ -32,8 +32,6 @@ public:
     //! Unit directions of the probes: faces first (−x, +x, −y, +y, −z, +z), then edges, then
     //! corners.
     static const std::array<Vec3d, kProbeCount>& directions();
-    //! The probe pointing straight along `direction` (a face probe for an axis).
-    static int probeAlong(const Vec3d& direction);
     //! The 9 probes of the hemisphere `up` points into (a face, 4 edges, 4 corners for an axis).
     static WetProbes hemisphere(const Vec3d& up);
 
@@ -47,8 +45,6 @@ public:
 
     static Placement placement(int wetProbes);
     static Placement placement(const WetProbes& wet) { return placement(int(wet.count())); }
-    //! "in water", "floating" or "airborne".
-    static const char* name(Placement placement);
 
 private:
     double spacing_;

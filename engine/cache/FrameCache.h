@@ -1,5 +1,5 @@
 #pragma once
-// A cache folder (DESIGN §5, docs/CACHE_FORMAT.md): manifest.json plus one frame_NNNN.atf per
+// A cache folder (docs/CACHE_FORMAT.md): manifest.json plus one frame_NNNN.atf per
 // frame. Used by the bake loop (write, resume), the CLI (info, export) and the editor (timeline).
 //
 // Consistency: every file is replaced atomically, and the manifest is only ever updated after the

@@ -65,7 +65,8 @@ public:
 
     const std::vector<BubbleCensusFrame>& frames() const { return frames_; }
     const BubbleCensusTotals& totals() const { return totals_; }
-    //! Mean bubbles in water per frame over the surveyed frames numbered `firstFrame` and later.
+    //! Mean bubbles in water per frame over the surveyed frames numbered `firstFrame` and later
+    //! (the report gives it for the second half of the bake).
     double meanInWaterFrom(int firstFrame) const;
 
 private:

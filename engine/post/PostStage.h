@@ -1,5 +1,5 @@
 #pragma once
-// `airtrap-cli post` and the editor's Post action (DESIGN §2: Scene → Simulation → FrameCache →
+// `airtrap-cli post` and the editor's Post action (the data flow Scene → Simulation → FrameCache →
 // Post → Exporters): for each chosen cache frame, the water volume and its free-surface mesh
 // (paper §4.1), stored beside the cache (PostStore), then the sub-grid bubbles (§4.2,
 // SubgridPass). Frames run in parallel; a frame whose stored

@@ -1,7 +1,7 @@
 #pragma once
-// The declarations of the render outputs' settings (paper §4; DESIGN §4 "Free-surface mesh",
-// "Oscillating bubble mesh", "Sub-grid bubbles"). They shape what the post stage makes of a bake,
-// not the bake, so the cache's parameter hash leaves them out: changing them never asks for a
+// The declarations of the render outputs' settings (paper §4.1–4.2; docs/SCENE_FORMAT.md
+// `surface_mesh`, `bubble_mesh`, `subgrid_bubbles`). They shape what the post stage makes of a
+// bake, not the bake, so the cache's parameter hash leaves them out: changing them never asks for a
 // re-bake.
 #include "scene/SchemaSection.h"
 

@@ -11,7 +11,7 @@
 
 namespace airtrap {
 
-//! WCSPH settings (paper §3.1, DESIGN §4).
+//! WCSPH settings (paper §3.1, docs/SCENE_FORMAT.md `solver`).
 struct SolverSettings {
     double particleSpacing = 0.02; //!< m, initial distance between water particles
     double supportFactor = 2.0;    //!< kernel support radius = supportFactor × spacing
@@ -124,8 +124,8 @@ struct BubbleSettings {
     double impactSpeed = 2.0;           //!< m/s of water hitting a floating bubble that pops it
 };
 
-//! The free-surface water mesh (paper §4.1, DESIGN §4). Lengths in particle spacings, so a scene
-//! keeps its look when its resolution changes.
+//! The water mesh (paper §4.1, docs/SCENE_FORMAT.md `surface_mesh`). Lengths in particle spacings,
+//! so a scene keeps its look when its resolution changes.
 struct SurfaceMeshSettings {
     //! "free_surface" (the paper's: no polygons along bodies and bubbles) or "closed" (the whole
     //! watertight level-set mesh, for refraction renders).
@@ -133,7 +133,7 @@ struct SurfaceMeshSettings {
     double voxelSize = 0.5;      //!< spacings per voxel of the level set (finer: more detail)
     double particleRadius = 1.0; //!< spacings; radius of the sphere each particle contributes
     int smoothing = 4;           //!< mean-curvature passes that flatten the spheres' bumps
-    double margin = 1.0;         //!< spacings; polygons this close to a body or bubble are dropped
+    double margin = 1.0;         //!< spacings; polygons lying this close along a solid are dropped
 };
 
 //! The oscillating bubble mesh (paper §4.1, eq. 10).

@@ -1,6 +1,6 @@
 #pragma once
 // Turns a scene's `bodies` entry into a RigidBody: its shape, one layer of boundary particles,
-// mass properties from density and shape, and its motion (DESIGN §4).
+// mass properties from density and shape, and its motion (docs/SCENE_FORMAT.md `bodies`).
 #include "rigid/MassProperties.h"
 #include "rigid/RigidBody.h"
 #include "rigid/TriangleMesh.h"
