@@ -69,6 +69,25 @@ airtrap::ViewportWidget::CameraView parseCamera(const QString& text) {
     refuse(QStringLiteral("--camera %1: expected front, side, top or persp").arg(text));
 }
 
+airtrap::SurfaceShading parseSurface(const QString& text) {
+    if (const auto shading = airtrap::surfaceShadingNamed(text.toStdString()))
+        return *shading;
+    refuse(QStringLiteral("--surface %1: expected translucent, opaque or wireframe").arg(text));
+}
+
+float parseParticleSize(const QString& text) {
+    bool ok = false;
+    const float factor = text.toFloat(&ok);
+    using Viewport = airtrap::ViewportWidget;
+    if (!ok || factor < Viewport::kMinParticleSize || factor > Viewport::kMaxParticleSize)
+        refuse(QStringLiteral("--particle-size %1: expected a factor from %2 to %3 of the default "
+                              "radius (half the particle spacing)")
+                   .arg(text)
+                   .arg(double(Viewport::kMinParticleSize))
+                   .arg(double(Viewport::kMaxParticleSize)));
+    return factor;
+}
+
 //! Parses the command line; exits with a message on bad input (QCommandLineParser's way).
 EditorOptions parseOptions(const QApplication& app) {
     QCommandLineParser parser;
@@ -104,10 +123,21 @@ EditorOptions parseOptions(const QApplication& app) {
         QStringLiteral("camera"),
         QStringLiteral("Screenshot camera: front, side, top or persp (default persp)."),
         QStringLiteral("view"));
+    const QCommandLineOption surface(
+        QStringLiteral("surface"),
+        QStringLiteral("Screenshot water surface shading: translucent, opaque or wireframe "
+                       "(default translucent)."),
+        QStringLiteral("shading"));
+    const QCommandLineOption particleSize(
+        QStringLiteral("particle-size"),
+        QStringLiteral("Screenshot particle size, times the default radius of half the "
+                       "particle spacing (0.1 to 3; default 1)."),
+        QStringLiteral("factor"));
     const QCommandLineOption noSelection(
         QStringLiteral("no-selection"),
         QStringLiteral("Draw no selection (screenshots never draw one; accepted for scripts)."));
-    parser.addOptions({scene, cache, frame, screenshot, size, window, show, camera, noSelection});
+    parser.addOptions({scene, cache, frame, screenshot, size, window, show, camera, surface,
+                       particleSize, noSelection});
     parser.process(app);
 
     EditorOptions options;
@@ -123,6 +153,10 @@ EditorOptions parseOptions(const QApplication& app) {
         request.layers = parseLayers(parser.value(show));
     if (parser.isSet(camera))
         request.camera = parseCamera(parser.value(camera));
+    if (parser.isSet(surface))
+        request.surface = parseSurface(parser.value(surface));
+    if (parser.isSet(particleSize))
+        request.particleSize = parseParticleSize(parser.value(particleSize));
     if (parser.isSet(frame)) {
         bool ok = false;
         request.frame = parser.value(frame).toInt(&ok);

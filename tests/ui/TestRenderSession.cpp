@@ -67,9 +67,11 @@ private Q_SLOTS:
         window.actions().showSurface->setChecked(false);
         QCOMPARE(window.viewport()->surfaceTriangleCount(), 0);
         window.actions().showSurface->setChecked(true);
-        window.actions().transparentSurface->setChecked(false);
+        window.actions().opaqueSurface->setChecked(true);
         QCOMPARE(window.viewport()->surfaceOpacity(), 1.0f);
-        window.actions().transparentSurface->setChecked(true);
+        window.actions().wireframeSurface->setChecked(true);
+        QCOMPARE(window.viewport()->surfaceShading(), SurfaceShading::Wireframe);
+        window.actions().translucentSurface->setChecked(true);
         QVERIFY(window.viewport()->surfaceOpacity() < 1.0f);
 
         RenderRequest request;

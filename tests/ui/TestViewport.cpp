@@ -167,6 +167,21 @@ PixelSplit splitAround(const QImage& image, const QPointF& centre, double radius
     return pixels;
 }
 
+//! Within a few levels in every channel: the multisampled framebuffer resolves a frame drawn
+//! again after new data to within rounding of the first, not always bit for bit.
+bool nearlySame(QRgb a, QRgb b) {
+    return std::abs(qRed(a) - qRed(b)) <= 8 && std::abs(qGreen(a) - qGreen(b)) <= 8 &&
+           std::abs(qBlue(a) - qBlue(b)) <= 8;
+}
+
+int pixelsChanged(const QImage& a, const QImage& b) {
+    int count = 0;
+    for (int y = 0; y < a.height(); ++y)
+        for (int x = 0; x < a.width(); ++x)
+            count += nearlySame(a.pixel(x, y), b.pixel(x, y)) ? 0 : 1;
+    return count;
+}
+
 QString describe(const QColor& colour) {
     return colour.name(QColor::HexRgb);
 }
@@ -253,6 +268,8 @@ private Q_SLOTS:
         viewport->setScene(scene);
         FrameData frame = *initialFrame(scene);
         viewport->setFrame(std::make_shared<const FrameData>(frame));
+        // Tens of thousands of overlapping sprites do not resolve the same bit for bit twice.
+        viewport->setShowWater(false);
         QCOMPARE(viewport->bubbleCount(), 0);
         const QImage without = viewport->grabFramebuffer();
 
@@ -292,7 +309,7 @@ private Q_SLOTS:
         QVERIFY2(coloured.inside > 0.6 * disc,
                  qPrintable(QStringLiteral("%1 of %2").arg(coloured.inside).arg(disc)));
         const PixelSplit changed = splitAround(image, centreInImage, outline, [&](int x, int y) {
-            return image.pixel(x, y) != without.pixel(x, y);
+            return !nearlySame(image.pixel(x, y), without.pixel(x, y));
         });
         QVERIFY(changed.inside >= coloured.inside);
         QCOMPARE(changed.outside, 0);
@@ -304,6 +321,7 @@ private Q_SLOTS:
         const Scene scene = damBreak();
         viewport->setScene(scene);
         viewport->setFrame(initialFrame(scene));
+        viewport->setShowWater(false);
         const QImage without = viewport->grabFramebuffer();
         SubgridBubble small;
         small.radius = 0.1;
@@ -331,7 +349,7 @@ private Q_SLOTS:
         QCOMPARE(countAround(without, speckCentre, 3, ratio, isBubble), 0);
         viewport->setSubgridBubbles({});
         QCOMPARE(viewport->subgridBubbleCount(), 0);
-        QCOMPARE(viewport->grabFramebuffer(), without);
+        QCOMPARE(pixelsChanged(viewport->grabFramebuffer(), without), 0);
     }
 
     void bubblesHaveAColourOfTheirOwn() {
@@ -395,7 +413,9 @@ private Q_SLOTS:
         QCOMPARE(countAround(dry, bubble, 3, ratio, isBubble), 49);
 
         viewport->setShowWater(true);
-        QCOMPARE(countWater(viewport->grabFramebuffer()), waterPixels);
+        const int waterAgain = countWater(viewport->grabFramebuffer());
+        QVERIFY2(std::abs(waterAgain - waterPixels) <= waterPixels / 50,
+                 qPrintable(QStringLiteral("%1, then %2").arg(waterPixels).arg(waterAgain)));
     }
 
     void aFrameWithItsSurfaceShowsTheSurfaceNotTheParticles() {

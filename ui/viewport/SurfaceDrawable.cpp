@@ -8,6 +8,7 @@
 #include <QOpenGLContext>
 #include <QOpenGLExtraFunctions>
 #include <QVector3D>
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -56,10 +57,33 @@ void main() {
 }
 )";
 
+//! Each edge of `mesh` once, as index pairs: neighbouring triangles share theirs, and a line
+//! drawn twice with blending would be darker than its neighbours.
+std::vector<GLuint> distinctEdges(const TriangleMesh& mesh) {
+    std::vector<std::uint64_t> keys;
+    keys.reserve(3 * mesh.triangles.size());
+    for (const TriangleMesh::Triangle& triangle : mesh.triangles)
+        for (int corner = 0; corner < 3; ++corner) {
+            const std::uint64_t a = triangle[corner];
+            const std::uint64_t b = triangle[(corner + 1) % 3];
+            keys.push_back(std::min(a, b) << 32 | std::max(a, b));
+        }
+    std::sort(keys.begin(), keys.end());
+    keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+    std::vector<GLuint> indices;
+    indices.reserve(2 * keys.size());
+    for (std::uint64_t key : keys) {
+        indices.push_back(GLuint(key >> 32));
+        indices.push_back(GLuint(key & 0xFFFFFFFFu));
+    }
+    return indices;
+}
+
 } // namespace
 
 SurfaceDrawable::SurfaceDrawable()
-    : vertexBuffer_(QOpenGLBuffer::VertexBuffer), indexBuffer_(QOpenGLBuffer::IndexBuffer) {}
+    : vertexBuffer_(QOpenGLBuffer::VertexBuffer), indexBuffer_(QOpenGLBuffer::IndexBuffer),
+      edgeIndexBuffer_(QOpenGLBuffer::IndexBuffer) {}
 
 SurfaceDrawable::~SurfaceDrawable() = default;
 
@@ -80,10 +104,21 @@ void SurfaceDrawable::initialize() {
     vertexBuffer_.setUsagePattern(QOpenGLBuffer::DynamicDraw);
     indexBuffer_.create();
     indexBuffer_.setUsagePattern(QOpenGLBuffer::DynamicDraw);
+    edgeArray_.create();
+    edgeIndexBuffer_.create();
+    edgeIndexBuffer_.setUsagePattern(QOpenGLBuffer::DynamicDraw);
+    bindVertices(vertexArray_, indexBuffer_);
+    bindVertices(edgeArray_, edgeIndexBuffer_);
+    uploadedIndices_ = 0;
+    uploadedEdgeIndices_ = 0;
+    dirty_ = true;
+}
+
+void SurfaceDrawable::bindVertices(QOpenGLVertexArrayObject& array, QOpenGLBuffer& indices) {
     QOpenGLExtraFunctions* gl = QOpenGLContext::currentContext()->extraFunctions();
-    QOpenGLVertexArrayObject::Binder binder(&vertexArray_);
+    QOpenGLVertexArrayObject::Binder binder(&array);
     vertexBuffer_.bind();
-    indexBuffer_.bind(); // the element buffer binding is part of the vertex array's state
+    indices.bind(); // the element buffer binding is part of the vertex array's state
     const auto stride = GLsizei(6 * sizeof(float));
     gl->glEnableVertexAttribArray(0);
     gl->glEnableVertexAttribArray(1);
@@ -91,12 +126,11 @@ void SurfaceDrawable::initialize() {
     gl->glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride,
                               reinterpret_cast<const void*>(std::intptr_t(3 * sizeof(float))));
     vertexBuffer_.release();
-    uploadedIndices_ = 0;
-    dirty_ = true;
 }
 
 void SurfaceDrawable::upload() {
     dirty_ = false;
+    edgesDirty_ = true;
     uploadedIndices_ = 0;
     if (!mesh_ || mesh_->triangles.empty())
         return;
@@ -119,6 +153,18 @@ void SurfaceDrawable::upload() {
     uploadedIndices_ = int(3 * mesh_->triangles.size());
 }
 
+void SurfaceDrawable::uploadEdges() {
+    edgesDirty_ = false;
+    uploadedEdgeIndices_ = 0;
+    if (!mesh_ || mesh_->triangles.empty())
+        return;
+    const std::vector<GLuint> edges = distinctEdges(*mesh_);
+    QOpenGLVertexArrayObject::Binder binder(&edgeArray_);
+    edgeIndexBuffer_.bind();
+    edgeIndexBuffer_.allocate(edges.data(), int(edges.size() * sizeof(GLuint)));
+    uploadedEdgeIndices_ = int(edges.size());
+}
+
 void SurfaceDrawable::draw(const RenderContext& context) {
     if (!program_)
         return;
@@ -126,6 +172,9 @@ void SurfaceDrawable::draw(const RenderContext& context) {
         upload();
     if (uploadedIndices_ == 0)
         return;
+    const bool wireframe = shading_ == SurfaceShading::Wireframe;
+    if (wireframe && edgesDirty_)
+        uploadEdges();
     QOpenGLExtraFunctions& gl = context.gl;
     gl.glEnable(GL_DEPTH_TEST);
     gl.glEnable(GL_BLEND);
@@ -134,10 +183,17 @@ void SurfaceDrawable::draw(const RenderContext& context) {
     program_->bind();
     program_->setUniformValue("view", context.view);
     program_->setUniformValue("projection", context.projection);
-    program_->setUniformValue("colour", rgbVector(kSurfaceColour));
-    program_->setUniformValue("opacity", opacity_);
-    QOpenGLVertexArrayObject::Binder binder(&vertexArray_);
-    gl.glDrawElements(GL_TRIANGLES, uploadedIndices_, GL_UNSIGNED_INT, nullptr);
+    // Lines are thin: paler than the sheet so that they read against the dark background.
+    program_->setUniformValue("colour",
+                              rgbVector(wireframe ? kSurfaceColour.lighter(160) : kSurfaceColour));
+    program_->setUniformValue("opacity", opacity());
+    if (wireframe) {
+        QOpenGLVertexArrayObject::Binder binder(&edgeArray_);
+        gl.glDrawElements(GL_LINES, uploadedEdgeIndices_, GL_UNSIGNED_INT, nullptr);
+    } else {
+        QOpenGLVertexArrayObject::Binder binder(&vertexArray_);
+        gl.glDrawElements(GL_TRIANGLES, uploadedIndices_, GL_UNSIGNED_INT, nullptr);
+    }
     program_->release();
     gl.glDepthMask(GL_TRUE);
     gl.glDisable(GL_BLEND);
@@ -148,7 +204,10 @@ void SurfaceDrawable::release() {
     vertexBuffer_.destroy();
     indexBuffer_.destroy();
     vertexArray_.destroy();
+    edgeIndexBuffer_.destroy();
+    edgeArray_.destroy();
     uploadedIndices_ = 0;
+    uploadedEdgeIndices_ = 0;
 }
 
 } // namespace airtrap

@@ -3,9 +3,11 @@
 // translucent, lit sheet of sea blue over whatever the view shows beneath it: the particles, the
 // bubbles, the bodies. Drawn after the solids without writing depth, so everything behind it
 // stays visible through it; smooth vertex normals and a Fresnel-like rim make its curvature
-// read. Uploaded again only when the frame's mesh changes.
+// read. Opaque, it hides what it covers; as a wireframe, its triangles' edges are drawn once each
+// (a shared edge is one line), lit like the sheet. Uploaded again only when the mesh changes.
 #include "rigid/TriangleMesh.h"
 #include "viewport/Drawable.h"
+#include "viewport/SurfaceShading.h"
 
 #include <QColor>
 #include <QOpenGLBuffer>
@@ -25,10 +27,14 @@ public:
     //! Face-on opacity of the translucent look (grazing views are more opaque).
     static constexpr float kTranslucent = 0.55f;
 
-    //! 0 (invisible) to 1 (opaque); kTranslucent by default.
-    void setOpacity(float opacity) { opacity_ = opacity; }
-    float opacity() const { return opacity_; }
+    //! Translucent (the default), opaque or wireframe.
+    void setShading(SurfaceShading shading) { shading_ = shading; }
+    SurfaceShading shading() const { return shading_; }
+    //! Face-on opacity: kTranslucent when translucent, 1 otherwise.
+    float opacity() const { return shading_ == SurfaceShading::Translucent ? kTranslucent : 1.0f; }
     int triangleCount() const { return mesh_ ? int(mesh_->triangleCount()) : 0; }
+    //! Distinct edges of the mesh the wireframe last drew.
+    int edgeCount() const { return uploadedEdgeIndices_ / 2; }
 
     static QColor colour();
 
@@ -37,16 +43,24 @@ public:
     void release() override;
 
 private:
+    //! Attaches the vertex buffer's position and normal to `array`, with `indices` as its elements.
+    void bindVertices(QOpenGLVertexArrayObject& array, QOpenGLBuffer& indices);
     void upload();
+    void uploadEdges();
 
     std::unique_ptr<QOpenGLShaderProgram> program_;
     QOpenGLBuffer vertexBuffer_;
     QOpenGLBuffer indexBuffer_;
     QOpenGLVertexArrayObject vertexArray_;
+    // The wireframe: the same vertices, a second vertex array for the edge index buffer.
+    QOpenGLBuffer edgeIndexBuffer_;
+    QOpenGLVertexArrayObject edgeArray_;
     std::shared_ptr<const TriangleMesh> mesh_;
     int uploadedIndices_ = 0;
-    float opacity_ = kTranslucent;
+    int uploadedEdgeIndices_ = 0;
+    SurfaceShading shading_ = SurfaceShading::Translucent;
     bool dirty_ = false;
+    bool edgesDirty_ = false; // the edges are found only when the wireframe is first drawn
 };
 
 } // namespace airtrap

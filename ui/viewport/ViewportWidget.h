@@ -62,6 +62,9 @@ public:
     const SceneItem& selection() const { return selection_; }
     //! Radius the particles are drawn with, in metres.
     float particleRadius() const;
+    //! The smallest and largest particle size factor (setParticleSize()).
+    static constexpr float kMinParticleSize = 0.1f;
+    static constexpr float kMaxParticleSize = 3.0f;
     //! The speed drawn white, m/s: the fixed scale, or the shown frame's fastest particle.
     float speedScale() const { return particles_.effectiveSpeedScale(); }
     //! Bubbles of the shown frame that the view draws.
@@ -120,14 +123,21 @@ public Q_SLOTS:
     //! Whether the selection's gizmo is highlighted; off, the selection is kept but not drawn.
     void setShowSelection(bool show);
     void setShowSurface(bool show);
-    //! Translucent (the default) or opaque water surface.
-    void setSurfaceTransparent(bool transparent);
+    //! Translucent (the default), opaque or wireframe water surface.
+    void setSurfaceShading(airtrap::SurfaceShading shading);
+    SurfaceShading surfaceShading() const { return surface_.shading(); }
     float surfaceOpacity() const { return surface_.opacity(); }
+    //! Edges the wireframe surface drew last (0 before it is first drawn).
+    int surfaceEdgeCount() const { return surface_.edgeCount(); }
     //! On, bubbles are drawn over any water in front of them, as if the water were clear, but
     //! still hidden by bodies in front; off, water in front hides them like any solid.
     void setBubblesThroughWater(bool through);
     //! Draws particles with this radius (metres) instead of the default, half the scene's spacing.
     void setParticleRadius(float metres);
+    //! Draws particles at `factor` times the default radius (clamped to kParticleSizeRange): small
+    //! points to see the flow inside the water, large ones to see it as a body.
+    void setParticleSize(float factor);
+    float particleSize() const { return particleSize_; }
     //! Fixes the speed drawn white (m/s); 0 follows each frame's fastest particle. By default it is
     //! the scene's design speed u_max (solver max_speed), so colours compare between frames.
     void setSpeedScale(float metresPerSecond);
@@ -187,6 +197,7 @@ private:
     std::shared_ptr<const FrameData> frame_;
 
     std::optional<float> particleRadiusOverride_;
+    float particleSize_ = 1.0f;
     std::optional<float> speedScaleOverride_;
     bool showGrid_ = true;
     bool showAxes_ = true;

@@ -1,6 +1,9 @@
 #include "window/EditorActions.h"
 
+#include "viewport/SurfaceShading.h"
+
 #include <QAction>
+#include <QActionGroup>
 #include <QApplication>
 #include <QKeySequence>
 #include <QStyle>
@@ -123,15 +126,51 @@ void EditorActions::makeViewActions() {
                        tr("Draw the particles of a frame whose surface mesh is made; off, the "
                           "mesh stands for the water")),
                   false);
-    transparentSurface = checkable(make("transparentSurfaceAction", tr("&Transparent Surface"),
-                                        tr("See the particles, bubbles and bodies through the "
-                                           "water surface; off, it is opaque")),
-                                   true);
+    makeSurfaceShadingActions();
     bubblesThroughWater =
         checkable(make("bubblesThroughWaterAction", tr("&Bubbles Through Water"),
                        tr("Draw air bubbles in front of the water around them; bodies still "
                           "hide them")),
                   true);
+    makeParticleSizeActions();
+}
+
+void EditorActions::makeSurfaceShadingActions() {
+    surfaceShading = new QActionGroup(this);
+    surfaceShading->setExclusive(true);
+    const auto shadingAction = [this](const char* objectName, const QString& text,
+                                      const QString& tip, SurfaceShading shading) {
+        QAction* action = checkable(make(objectName, text, tip), false);
+        action->setData(QString::fromUtf8(surfaceShadingName(shading).data(),
+                                          qsizetype(surfaceShadingName(shading).size())));
+        surfaceShading->addAction(action);
+        return action;
+    };
+    translucentSurface =
+        shadingAction("translucentSurfaceAction", tr("&Translucent Surface"),
+                      tr("See the particles, bubbles and bodies through the water surface"),
+                      SurfaceShading::Translucent);
+    opaqueSurface = shadingAction("opaqueSurfaceAction", tr("&Opaque Surface"),
+                                  tr("Show the water surface's own shape, hiding what is under it"),
+                                  SurfaceShading::Opaque);
+    wireframeSurface =
+        shadingAction("wireframeSurfaceAction", tr("Wire&frame Surface"),
+                      tr("Draw the water surface's triangle edges: its resolution and where "
+                         "it is open"),
+                      SurfaceShading::Wireframe);
+    translucentSurface->setChecked(true);
+}
+
+void EditorActions::makeParticleSizeActions() {
+    largerParticles =
+        make("largerParticlesAction", tr("&Larger Particles"), tr("Draw the particles larger"));
+    largerParticles->setShortcut(QKeySequence(Qt::Key_BracketRight));
+    smallerParticles = make("smallerParticlesAction", tr("S&maller Particles"),
+                            tr("Draw the particles smaller, down to points"));
+    smallerParticles->setShortcut(QKeySequence(Qt::Key_BracketLeft));
+    defaultParticleSize =
+        make("defaultParticleSizeAction", tr("&Default Particle Size"),
+             tr("Draw the particles with half the particle spacing as their radius"));
 }
 
 void EditorActions::makePlaybackActions() {

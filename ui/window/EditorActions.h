@@ -5,6 +5,7 @@
 #include <QObject>
 
 class QAction;
+class QActionGroup;
 class QWidget;
 
 namespace airtrap {
@@ -44,8 +45,16 @@ public:
     QAction* showWater;
     QAction* showSurface;
     QAction* particlesUnderSurface;
-    QAction* transparentSurface;
+    // The surface's shading, one of three (exclusive; each action's data is its shading's name)
+    QAction* translucentSurface;
+    QAction* opaqueSurface;
+    QAction* wireframeSurface;
+    QActionGroup* surfaceShading;
     QAction* bubblesThroughWater;
+    // The particles' drawn size
+    QAction* largerParticles;
+    QAction* smallerParticles;
+    QAction* defaultParticleSize;
     // Playback
     QAction* playPause;
     QAction* stepForward;
@@ -62,6 +71,8 @@ private:
     void makeEditActions();
     void makeSimulationActions();
     void makeViewActions();
+    void makeSurfaceShadingActions();
+    void makeParticleSizeActions();
     void makePlaybackActions();
 
     QWidget* window_;

@@ -22,8 +22,10 @@
 #include "window/RecentFiles.h"
 #include "window/RenderSession.h"
 #include "window/StatusBarFields.h"
+#include "window/ViewPreferences.h"
 
 #include <QAction>
+#include <QActionGroup>
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QFileDialog>
@@ -43,21 +45,6 @@ namespace {
 constexpr auto kGeometryKey = "mainWindow/geometry";
 constexpr auto kStateKey = "mainWindow/state";
 constexpr auto kSceneFilter = "Airtrap scenes (*.json);;All files (*)";
-constexpr auto kShowWaterKey = "view/showWater";
-constexpr auto kShowSurfaceKey = "view/showSurface";
-constexpr auto kTransparentSurfaceKey = "view/transparentSurface";
-constexpr auto kParticlesUnderSurfaceKey = "view/particlesUnderSurface";
-constexpr auto kBubblesThroughWaterKey = "view/bubblesThroughWater";
-
-//! Checks `action` as it was last left (its own state the first time) and stores each change as
-//! it is made, not on quit, so the choice survives a crash too.
-void remember(QAction* action, const char* key) {
-    QSettings& settings = EditorSettings::store();
-    action->setChecked(settings.value(QLatin1String(key), action->isChecked()).toBool());
-    QObject::connect(action, &QAction::toggled, action, [key](bool checked) {
-        EditorSettings::store().setValue(QLatin1String(key), checked);
-    });
-}
 } // namespace
 
 MainWindow::MainWindow(QWidget* parent)
@@ -211,8 +198,12 @@ void MainWindow::createMenus() {
         {actions_->frameAll, actions_->showGrid, actions_->showAxes, actions_->showGizmos});
     viewMenu_->addSeparator();
     viewMenu_->addActions({actions_->showWater, actions_->showSurface,
-                           actions_->particlesUnderSurface, actions_->transparentSurface,
-                           actions_->bubblesThroughWater});
+                           actions_->particlesUnderSurface, actions_->bubblesThroughWater});
+    viewMenu_->addSeparator();
+    viewMenu_->addActions(actions_->surfaceShading->actions());
+    viewMenu_->addSeparator();
+    viewMenu_->addActions(
+        {actions_->largerParticles, actions_->smallerParticles, actions_->defaultParticleSize});
     viewMenu_->addSeparator();
     for (QDockWidget* dock : findChildren<QDockWidget*>())
         viewMenu_->addAction(dock->toggleViewAction());
@@ -308,24 +299,7 @@ void MainWindow::connectActions() {
     connect(actions_->showGrid, &QAction::toggled, viewport_, &ViewportWidget::setShowGrid);
     connect(actions_->showAxes, &QAction::toggled, viewport_, &ViewportWidget::setShowAxes);
     connect(actions_->showGizmos, &QAction::toggled, viewport_, &ViewportWidget::setShowGizmos);
-    connect(actions_->showWater, &QAction::toggled, viewport_, &ViewportWidget::setShowWater);
-    connect(actions_->showSurface, &QAction::toggled, viewport_, &ViewportWidget::setShowSurface);
-    connect(actions_->particlesUnderSurface, &QAction::toggled, viewport_,
-            &ViewportWidget::setParticlesUnderSurface);
-    connect(actions_->transparentSurface, &QAction::toggled, viewport_,
-            &ViewportWidget::setSurfaceTransparent);
-    connect(actions_->bubblesThroughWater, &QAction::toggled, viewport_,
-            &ViewportWidget::setBubblesThroughWater);
-    remember(actions_->showWater, kShowWaterKey);
-    remember(actions_->showSurface, kShowSurfaceKey);
-    remember(actions_->particlesUnderSurface, kParticlesUnderSurfaceKey);
-    remember(actions_->transparentSurface, kTransparentSurfaceKey);
-    remember(actions_->bubblesThroughWater, kBubblesThroughWaterKey);
-    viewport_->setShowWater(actions_->showWater->isChecked());
-    viewport_->setShowSurface(actions_->showSurface->isChecked());
-    viewport_->setParticlesUnderSurface(actions_->particlesUnderSurface->isChecked());
-    viewport_->setSurfaceTransparent(actions_->transparentSurface->isChecked());
-    viewport_->setBubblesThroughWater(actions_->bubblesThroughWater->isChecked());
+    new ViewPreferences(*actions_, *viewport_, this);
     connect(actions_->playPause, &QAction::triggered, this,
             [this] { timeline_->isPlaying() ? timeline_->pause() : timeline_->play(); });
     connect(actions_->stepForward, &QAction::triggered, timeline_, &TimelineWidget::stepForward);

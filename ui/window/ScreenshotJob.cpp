@@ -1,10 +1,13 @@
 #include "window/ScreenshotJob.h"
 
 #include "timeline/FrameLoader.h"
+#include "viewport/SurfaceShading.h"
 #include "viewport/ViewportWidget.h"
 #include "window/EditorActions.h"
 #include "window/MainWindow.h"
 
+#include <QAction>
+#include <QActionGroup>
 #include <QImage>
 #include <QTimer>
 #include <algorithm>
@@ -75,10 +78,14 @@ void ScreenshotJob::applyView() {
     ViewportWidget& viewport = *window_.viewport();
     viewport.setShowSelection(false);
     viewport.setCameraView(request_.camera);
+    viewport.setParticleSize(request_.particleSize);
+    const EditorActions& actions = window_.actions();
+    for (QAction* action : actions.surfaceShading->actions())
+        if (surfaceShadingNamed(action->data().toString().toStdString()) == request_.surface)
+            action->setChecked(true);
     if (!request_.layers)
         return;
     const ScreenshotRequest::Layers& show = *request_.layers;
-    const EditorActions& actions = window_.actions();
     actions.showWater->setChecked(show.particles);
     actions.particlesUnderSurface->setChecked(show.particles);
     actions.showSurface->setChecked(show.mesh);

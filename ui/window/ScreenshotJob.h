@@ -34,6 +34,8 @@ struct ScreenshotRequest {
     //! Unset: the editor's default view (a frame with a mesh shows the mesh, else particles).
     std::optional<Layers> layers;
     ViewportWidget::CameraView camera = ViewportWidget::CameraView::Perspective;
+    SurfaceShading surface = SurfaceShading::Translucent;
+    float particleSize = 1.0f; //!< times the default radius (half the particle spacing)
 };
 
 class ScreenshotJob : public QObject {
