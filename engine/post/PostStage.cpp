@@ -56,7 +56,7 @@ void PostStage::makeFrame(int frame, Interrupter& interrupter, PostReport& repor
     const double spacing = scene_.solver.particleSpacing;
     Interrupter part(&interrupter);
     const WaterVolume water =
-        WaterVolume::build(data->state.fluid, spacing, scene_.surfaceMesh, &part);
+        WaterVolume::build(data->state.fluid, spacing, scene_.surfaceMesh, scene_.domain(), &part);
     if (part.stopRequested())
         return;
     const TriangleMesh surface = renderedSurface(water.mesh(), FrameSolids(solids_, data->state),

@@ -5,12 +5,15 @@
 #include "post/WaterGrids.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <mutex>
+#include <openvdb/tools/Composite.h>
 #include <openvdb/tools/Interpolation.h>
 #include <openvdb/tools/LevelSetFilter.h>
 #include <openvdb/tools/LevelSetMeasure.h>
 #include <openvdb/tools/LevelSetRebuild.h>
+#include <openvdb/tools/MeshToVolume.h>
 #include <openvdb/tools/ParticlesToLevelSet.h>
 #include <openvdb/tools/VolumeToMesh.h>
 #include <string>
@@ -116,10 +119,62 @@ void smoothKeepingVolume(openvdb::FloatGrid& surface, int passes, double volume,
     matchVolume(filter, volume, maxShift);
 }
 
+//! `fluid` and, for every particle within `reach` of a wall of `walls`, its mirror image across
+//! that wall (and, near an edge or a corner, across each pair and all three of the near walls).
+//! The sphere union then continues through the walls as it would past a mirror: the surface meets
+//! a wall square on, where alone it rounds off one to two spacings short of it.
+ParticleSet withMirrorImages(const ParticleSet& fluid, const Aabb& walls, double reach) {
+    ParticleSet all = fluid;
+    for (std::size_t n = 0; n < fluid.size(); ++n) {
+        const Vec3f& p = fluid.positions[n];
+        // Per axis, the plane the particle is near (if any): images are every non-empty subset.
+        std::array<std::optional<float>, 3> plane;
+        for (int axis = 0; axis < 3; ++axis) {
+            if (double(p[axis]) - walls.min[axis] < reach)
+                plane[axis] = float(walls.min[axis]);
+            else if (walls.max[axis] - double(p[axis]) < reach)
+                plane[axis] = float(walls.max[axis]);
+        }
+        for (int subset = 1; subset < 8; ++subset) {
+            Vec3f image = p;
+            Vec3f velocity = fluid.velocities[n];
+            bool exists = true;
+            for (int axis = 0; axis < 3 && exists; ++axis) {
+                if ((subset & (1 << axis)) == 0)
+                    continue;
+                exists = plane[axis].has_value();
+                if (exists) {
+                    image[axis] = 2.0f * *plane[axis] - p[axis];
+                    velocity[axis] = -velocity[axis];
+                }
+            }
+            if (exists)
+                all.push(image, velocity, fluid.densities[n], fluid.ids[n]);
+        }
+    }
+    return all;
+}
+
+//! Keeps the part of `surface` inside `walls`: the water's faces against them lie in their planes.
+void clipToWalls(openvdb::FloatGrid& surface, const Aabb& walls, float halfWidth) {
+    const openvdb::math::BBox<openvdb::Vec3d> box(
+        openvdb::Vec3d(walls.min.x(), walls.min.y(), walls.min.z()),
+        openvdb::Vec3d(walls.max.x(), walls.max.y(), walls.max.z()));
+    openvdb::FloatGrid::Ptr inside =
+        openvdb::tools::createLevelSetBox<openvdb::FloatGrid>(box, surface.transform(), halfWidth);
+    openvdb::tools::csgIntersection(surface, *inside);
+}
+
 } // namespace
 
 WaterVolume WaterVolume::build(const ParticleSet& fluid, double spacing,
                                const SurfaceMeshSettings& settings, Interrupter* interrupter) {
+    return build(fluid, spacing, settings, std::nullopt, interrupter);
+}
+
+WaterVolume WaterVolume::build(const ParticleSet& fluid, double spacing,
+                               const SurfaceMeshSettings& settings,
+                               const std::optional<Aabb>& walls, Interrupter* interrupter) {
     checkSettings(spacing, settings);
     initialiseOpenVdb();
     const double voxel = settings.voxelSize * spacing;
@@ -131,11 +186,18 @@ WaterVolume WaterVolume::build(const ParticleSet& fluid, double spacing,
     grids->surface = openvdb::createLevelSet<openvdb::FloatGrid>(voxel, halfWidth);
     grids->surface->setName("surface");
     grids->velocity = openvdb::Vec3SGrid::create();
-    const double particleVolume = double(fluid.size()) * spacing * spacing * spacing;
+    const double cell = spacing * spacing * spacing;
+    const double particleVolume = double(fluid.size()) * cell;
     if (!fluid.empty()) {
-        rasterise(fluid, radius, halfWidth, *grids, interrupter);
-        smoothKeepingVolume(*grids->surface, settings.smoothing, particleVolume, radius,
-                            interrupter);
+        // Images reach the band around the wall: the sphere radius plus the band's half width.
+        const ParticleSet rasterised =
+            walls ? withMirrorImages(fluid, *walls, radius + halfWidth * voxel) : fluid;
+        rasterise(rasterised, radius, halfWidth, *grids, interrupter);
+        // The images are water too until the clip: their volume is matched with the rest.
+        smoothKeepingVolume(*grids->surface, settings.smoothing, double(rasterised.size()) * cell,
+                            radius, interrupter);
+        if (walls)
+            clipToWalls(*grids->surface, *walls, halfWidth);
     }
     if (interrupter != nullptr && interrupter->stopRequested())
         return {};

@@ -11,6 +11,7 @@
 #include "sph/ParticleSet.h"
 
 #include <memory>
+#include <optional>
 
 namespace airtrap {
 
@@ -23,6 +24,13 @@ public:
     //! `interrupter`. Throws Error(InvalidInput) for settings out of range.
     static WaterVolume build(const ParticleSet& fluid, double spacing,
                              const SurfaceMeshSettings& settings,
+                             Interrupter* interrupter = nullptr);
+    //! The same, for water held inside `walls` (the tank with its headroom): the surface meets
+    //! each wall square on and ends in its plane, instead of rounding off one to two spacings
+    //! short of it, so that a renderer sees no gap between water and glass. Particles near a
+    //! wall are mirrored across it for the surface, which is then cut to the box.
+    static WaterVolume build(const ParticleSet& fluid, double spacing,
+                             const SurfaceMeshSettings& settings, const std::optional<Aabb>& walls,
                              Interrupter* interrupter = nullptr);
 
     WaterVolume() = default;

@@ -144,6 +144,42 @@ private Q_SLOTS:
         QVERIFY2(run.err.contains(QStringLiteral("--camera under")), qPrintable(run.err));
     }
 
+    void particleSizeAndSurfaceShadingComeFromTheFlags() {
+        const auto shot = [&](const QString& name, const QStringList& extra) {
+            const QString png = folder_.filePath(name);
+            const Run run = runEditor(
+                QStringList{QStringLiteral("--scene"), scenePath_, QStringLiteral("--frame"),
+                            QStringLiteral("3"), QStringLiteral("--screenshot"), png,
+                            QStringLiteral("--size"), QStringLiteral("480x320"),
+                            QStringLiteral("--show"), QStringLiteral("particles")} +
+                extra);
+            return run.exitCode == 0 ? QImage(png) : QImage();
+        };
+        const QImage standard = shot(QStringLiteral("standard.png"), {});
+        const QImage points = shot(QStringLiteral("points.png"),
+                                   {QStringLiteral("--particle-size"), QStringLiteral("0.2")});
+        QVERIFY(!standard.isNull() && !points.isNull());
+        // Points a fifth of the size leave gaps between them: fewer water pixels.
+        QVERIFY2(
+            waterPixels(points) < waterPixels(standard) * 9 / 10,
+            qPrintable(
+                QStringLiteral("%1 of %2").arg(waterPixels(points)).arg(waterPixels(standard))));
+        QVERIFY(!shot(QStringLiteral("wire.png"),
+                      {QStringLiteral("--surface"), QStringLiteral("wireframe")})
+                     .isNull());
+
+        Run run = runEditor({scenePath_, QStringLiteral("--screenshot"),
+                             folder_.filePath(QStringLiteral("x.png")), QStringLiteral("--surface"),
+                             QStringLiteral("glass")});
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY2(run.err.contains(QStringLiteral("--surface glass")), qPrintable(run.err));
+        run = runEditor({scenePath_, QStringLiteral("--screenshot"),
+                         folder_.filePath(QStringLiteral("x.png")),
+                         QStringLiteral("--particle-size"), QStringLiteral("9")});
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY2(run.err.contains(QStringLiteral("0.1 to 3")), qPrintable(run.err));
+    }
+
     void neitherReadsNorWritesTheUsersSettings() {
         // A user who hid the water, with a settings file of their own.
         QTemporaryDir config;

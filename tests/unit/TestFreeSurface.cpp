@@ -72,6 +72,16 @@ double distanceToSolids(const Vec3d& x) {
     return std::min({tank, bubble, ball});
 }
 
+//! The way into the nearest solid from `x`, by central differences of distanceToSolids().
+Vec3d intoSolid(const Vec3d& x) {
+    constexpr double h = 1e-5;
+    Vec3d gradient;
+    for (int axis = 0; axis < 3; ++axis)
+        gradient[axis] = distanceToSolids(x + h * Vec3d::Unit(axis)) -
+                         distanceToSolids(x - h * Vec3d::Unit(axis));
+    return -gradient.normalized();
+}
+
 bool facesOutward(const TriangleMesh& mesh, const Vec3d& centre) {
     for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
         const auto& [a, b, c] = mesh.triangles[t];
@@ -89,7 +99,10 @@ class TestFreeSurface : public QObject {
 
 private Q_SLOTS:
     void initTestCase() {
-        const WaterVolume water = WaterVolume::build(state_.fluid, kSpacing, settings_);
+        QVERIFY(scene_.domain().min.isZero() && scene_.domain().max.x() == 1.0 &&
+                scene_.domain().max.z() == 1.0);
+        const WaterVolume water =
+            WaterVolume::build(state_.fluid, kSpacing, settings_, scene_.domain());
         full_ = water.mesh();
         const SceneSolids solids(scene_);
         trimmed_ = freeSurfaceOnly(full_, FrameSolids(solids, state_), margin());
@@ -97,19 +110,34 @@ private Q_SLOTS:
     }
 
     void noPolygonLiesAlongOrInsideASolidOrABubble() {
-        // Every vertex is either clear of the margin or on a solid's surface, never inside one.
+        // No vertex inside a solid; the edge where the mesh stops lies on one.
         double deepest = 0.0;
         std::size_t onSurface = 0;
         for (const Vec3d& v : trimmed_.vertices) {
             const double d = distanceToSolids(v);
             deepest = std::min(deepest, d);
-            QVERIFY2(d >= margin() || std::abs(d) < 1e-3 * kSpacing,
-                     qPrintable(
-                         QString("a vertex %1 m from a solid, margin %2 m").arg(d).arg(margin())));
             onSurface += std::abs(d) < 1e-3 * kSpacing ? 1 : 0;
         }
         QVERIFY(deepest > -1e-3 * kSpacing);
         QVERIFY(onSurface > 0);
+        // No triangle within the margin faces the solid beside it (the water's side against a
+        // wall, a body or a bubble): what is left near one runs across the way into it. (The
+        // triangles along the edge, bent onto the solid, are the join.)
+        const auto onSolid = [&](std::uint32_t v) {
+            return std::abs(distanceToSolids(trimmed_.vertices[v])) < 1e-3 * kSpacing;
+        };
+        for (std::size_t t = 0; t < trimmed_.triangleCount(); ++t) {
+            const auto& [a, b, c] = trimmed_.triangles[t];
+            const Vec3d middle =
+                (trimmed_.vertices[a] + trimmed_.vertices[b] + trimmed_.vertices[c]) / 3.0;
+            if (distanceToSolids(middle) >= margin() || onSolid(a) || onSolid(b) || onSolid(c))
+                continue;
+            const double facing = trimmed_.normal(t).dot(intoSolid(middle));
+            QVERIFY2(facing < 0.5, qPrintable(QString("a triangle at (%1, %2, %3) faces a solid")
+                                                  .arg(middle.x())
+                                                  .arg(middle.y())
+                                                  .arg(middle.z())));
+        }
         // The full mesh lies along the solids: the trimming is what leaves only the top.
         std::size_t near = 0;
         for (const Vec3d& v : full_.vertices)
@@ -119,9 +147,8 @@ private Q_SLOTS:
 
     void theMeshMeetsTheSolidsWithNoGap() {
         // Every open edge of the free surface lies on the tank, the ball or the bubble, within
-        // half a voxel: where the water mesh stops, the other surface begins. In the tank's
-        // vertical corners the edge runs from one wall to the other as a chord, its middle up to
-        // a margin from both (the water's rounded corner, under a spacing across).
+        // half a voxel: where the water mesh stops, the other surface begins, in the tank's
+        // corners too.
         const double halfVoxel = 0.5 * settings_.voxelSize * kSpacing;
         std::map<std::pair<std::uint32_t, std::uint32_t>, int> edges;
         for (const auto& [a, b, c] : trimmed_.triangles)
@@ -134,10 +161,6 @@ private Q_SLOTS:
             ++open;
             const Vec3d middle =
                 0.5 * (trimmed_.vertices[edge.first] + trimmed_.vertices[edge.second]);
-            const double toX = std::min(middle.x(), 1.0 - middle.x());
-            const double toZ = std::min(middle.z(), 1.0 - middle.z());
-            if (toX < margin() && toZ < margin())
-                continue; // a corner's chord
             QVERIFY2(std::abs(distanceToSolids(middle)) < halfVoxel,
                      qPrintable(QString("an open edge at (%1, %2, %3), %4 m from every solid")
                                     .arg(middle.x())
@@ -146,6 +169,39 @@ private Q_SLOTS:
                                     .arg(distanceToSolids(middle))));
         }
         QVERIFY(open > 100);
+    }
+
+    void theSurfaceReachesTheTankWalls() {
+        // The water's sides lie in the walls' planes (the mesh spans the tank exactly), and no
+        // polygon of the free surface stands off a wall facing it: the surface meets each wall
+        // square on instead of rounding off short of it.
+        const Aabb bounds = full_.bounds();
+        for (int axis : {0, 2}) {
+            QVERIFY2(std::abs(bounds.min[axis]) < 1e-6 && std::abs(bounds.max[axis] - 1.0) < 1e-6,
+                     qPrintable(QString("the water spans %1 to %2 m across a 1 m tank")
+                                    .arg(bounds.min[axis])
+                                    .arg(bounds.max[axis])));
+            const Aabb top = trimmed_.bounds();
+            QVERIFY(std::abs(top.min[axis]) < 1e-6 && std::abs(top.max[axis] - 1.0) < 1e-6);
+        }
+        QVERIFY(std::abs(bounds.min.y()) < 1e-6);
+        std::size_t alongWalls = 0;
+        for (std::size_t t = 0; t < trimmed_.triangleCount(); ++t) {
+            const auto& [a, b, c] = trimmed_.triangles[t];
+            const Vec3d middle =
+                (trimmed_.vertices[a] + trimmed_.vertices[b] + trimmed_.vertices[c]) / 3.0;
+            const double toWall =
+                std::min({middle.x(), 1.0 - middle.x(), middle.z(), 1.0 - middle.z()});
+            if (toWall > 3.0 * kSpacing || distanceToSolids(middle) < toWall)
+                continue; // not by a wall, or nearer the ball or the bubble
+            ++alongWalls;
+            QVERIFY2(trimmed_.normal(t).y() > 0.9,
+                     qPrintable(QString("a free-surface triangle at (%1, %2, %3) faces a wall")
+                                    .arg(middle.x())
+                                    .arg(middle.y())
+                                    .arg(middle.z())));
+        }
+        QVERIFY(alongWalls > 100);
     }
 
     void theFreeSurfaceStaysAtTheWatersHeight() {
