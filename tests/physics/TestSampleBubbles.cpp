@@ -2,12 +2,13 @@
 // that the test stays short:
 //  - samples/pouring.json: the jet traps air in the pool; the bubbles rise, pop at the surface
 //    (surfaced or floating rule), and at most 2 % of the bubble-frames are out of the water
-//    (docs/VALIDATION.md, "Where the bubbles live");
+//    (docs/VALIDATION.md, "Where the bubbles live"); the pool, five spacings deep, does not keep
+//    90 % of them in water (an expected failure, with the reason there);
 //  - samples/bubble_column.json, at its own settings for the whole bake: the plunging jet drives
 //    air deep into the tank, and at least 90 % of the bubble-frames are in water, at most 2 %
 //    out of it;
-//  - samples/diving_bunny.json: the plunging bunny traps air in its wake, and no bubble is ever
-//    created inside the closed mesh.
+//  - samples/diving_bunny.json: no bubble is ever created inside the closed mesh; the air in the
+//    bunny's wake stays open to the air at this resolution (an expected failure).
 #include "core/Interrupter.h"
 #include "post/BubbleCensus.h"
 #include "scene/SceneJson.h"
@@ -76,6 +77,8 @@ private Q_SLOTS:
         QVERIFY(where.booksBalance);
         QVERIFY2(where.bubbleFrames >= 50, "too few bubble-frames to judge where bubbles live");
         QVERIFY2(where.airborneShare() <= 0.02, "bubbles live out of the water");
+        QEXPECT_FAIL("", "bubbles are born under spray in a pool five spacings deep", Continue);
+        QVERIFY2(where.inWaterShare() >= 0.9, "fewer than 90 % of the bubble-frames in water");
     }
 
     void bubbleColumnKeepsItsBubblesInWater() {
