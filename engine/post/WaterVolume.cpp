@@ -189,9 +189,10 @@ WaterVolume WaterVolume::build(const ParticleSet& fluid, double spacing,
     const double cell = spacing * spacing * spacing;
     const double particleVolume = double(fluid.size()) * cell;
     if (!fluid.empty()) {
-        // Images reach the band around the wall: the sphere radius plus the band's half width.
+        // Only an image whose sphere reaches into the tank shapes the surface there; a voxel more
+        // keeps the smoothing's stencil at the wall symmetric.
         const ParticleSet rasterised =
-            walls ? withMirrorImages(fluid, *walls, radius + halfWidth * voxel) : fluid;
+            walls ? withMirrorImages(fluid, *walls, radius + voxel) : fluid;
         rasterise(rasterised, radius, halfWidth, *grids, interrupter);
         // The images are water too until the clip: their volume is matched with the rest.
         smoothKeepingVolume(*grids->surface, settings.smoothing, double(rasterised.size()) * cell,
