@@ -1,6 +1,7 @@
 #include "sim/Simulation.h"
 
 #include "core/Error.h"
+#include "core/RunBeside.h"
 #include "sim/SceneSetup.h"
 #include "sph/WcsphSolver.h"
 
@@ -48,6 +49,19 @@ FrameStats measure(const ParticleSet& fluid) {
     return stats;
 }
 
+//! Runs `work` now, timed as `phase` of `phases`.
+template <class Work>
+void inPhase(StepPhases& phases, StepPhases::Phase phase, Work&& work) {
+    StepPhases::Scope scope(phases, phase);
+    work();
+}
+
+//! `work`, timed as `phase` of `phases` whenever it is called: a part for runBeside().
+template <class Work>
+auto timed(StepPhases& phases, StepPhases::Phase phase, Work work) {
+    return [&phases, phase, work] { inPhase(phases, phase, work); };
+}
+
 std::string percent(double fraction) {
     std::ostringstream out;
     out.precision(3);
@@ -92,8 +106,7 @@ Simulation::Advance Simulation::advanceFrame(Interrupter& interrupter, const Ste
 
     while (state_.time < target) {
         const double remaining = target - state_.time;
-        const StepReport report = solver_->step(state_, remaining);
-        afterStep(report, target);
+        const StepReport report = takeStep(remaining, target);
         // Growth is not loss: `lost` counts only the particles the solver removed at the
         // domain's walls.
         lost += report.removedParticles;
@@ -126,28 +139,95 @@ StepReport Simulation::step(double maxTimeStep) {
         steppedFrame_ = frameUnderWay;
         frameBubbles_ = {};
     }
-    const StepReport report = solver_->step(state_, maxTimeStep);
-    afterStep(report, std::numeric_limits<double>::infinity());
-    return report;
+    return takeStep(maxTimeStep, std::numeric_limits<double>::infinity());
 }
 
-void Simulation::afterStep(const StepReport& report, double frameEnd) {
+StepReport Simulation::takeStep(double timeToFrameEnd, double frameEnd) {
+    WcsphSolver& water = *solver_;
+    StepPhases& phases = water.phases();
+    ParticleSet& fluid = state_.fluid;
+    StepReport report;
+
+    // 1. Neighbouring information: the search grid built for the current positions, the water
+    //    sorted onto it; beside it, the bodies and the bubbles placed with their boundary
+    //    particles. Then the water near moving bodies, and Δt (CFL, docs/METHOD.md).
+    const auto sortWater =
+        timed(phases, StepPhases::Neighbours, [&] { water.sortByCell(fluid, report); });
+    if (water.bodiesToPlace(state_))
+        runBeside(sortWater, timed(phases, StepPhases::Bodies, [&] { water.placeBodies(state_); }));
+    else
+        sortWater();
+    inPhase(phases, StepPhases::Bodies, [&] { water.pairMovingBoundary(); });
+    report.timeStep =
+        water.chooseTimeStep(report.maxSpeed, state_.lastMaxAcceleration, timeToFrameEnd);
+
+    // 2. Particle interactions: densities by continuity (eq. 2) and pressures (eq. 3), then the
+    //    momentum equation (eq. 1) with the boundary force's contact impulses (eq. 4); beside the
+    //    forces, which only read the water too, the water around the bubbles measured for their
+    //    forces and deletion rules.
+    inPhase(phases, StepPhases::Density,
+            [&] { water.computeDensities(fluid, state_.steps, report.timeStep, report); });
+    const auto forces = timed(phases, StepPhases::Forces,
+                              [&] { water.computeForces(fluid, report.timeStep, report); });
+    if (water.bubbleSurroundingsDue(state_))
+        runBeside(forces, timed(phases, StepPhases::BubbleForces,
+                                [&] { water.measureBubbleSurroundings(state_); }));
+    else
+        forces();
+
+    // 3. Rigid-body and bubble interactions, and the move: the water's reaction on the dynamic
+    //    bodies (eq. 4), which move under it with the bubbles' steered rise (eq. 5), drag
+    //    (eq. 6) and pair impulses, beside the water's own integration.
+    report.nonFinite = !moveBodiesAndWater(report.timeStep);
+    state_.lastMaxAcceleration = report.maxAcceleration;
+    state_.lastTimeStep = report.timeStep;
+    ++state_.steps;
     const double stepStart = state_.time;
     // The last step of a frame lands on the frame time exactly, not on an accumulated sum.
     state_.time = report.timeStep == frameEnd - stepStart ? frameEnd : stepStart + report.timeStep;
-    solver_->followPaths(state_);
-    // After the step, so that the cached frame holds the particles due by its time and a
+    water.followPaths(state_);
+    // After the move, so that the cached frame holds the particles due by its time and a
     // resumed bake starts from the same set.
     emitInflow(stepStart, state_.time);
-    if (bubbleDeletion_ && !state_.bubbles.empty()) {
-        StepPhases::Scope scope(solver_->phases(), StepPhases::BubbleDeletion);
-        BubbleTally deleted;
-        bubbleDeletion_->afterStep(state_.bubbles, report.timeStep, deleted);
-        frameBubbles_ += deleted;
-        state_.bubblesDeleted += deleted;
-    }
+
+    // 4. Bubble deletion (age, time floating, overlap, impact, surfaced: docs/METHOD.md).
+    if (bubbleDeletion_ && !state_.bubbles.empty())
+        inPhase(phases, StepPhases::BubbleDeletion, [&] { deleteBubbles(report.timeStep); });
+
+    // 5. Air pockets on this step's grid become bubbles, every bubbles.pocket_interval steps.
+    //    Table 1 reads them off the grid before the interactions; here they are read off the
+    //    same grid after the move, so a new bubble first meets the water at the next step's
+    //    placing, with its boundary particles, like every other body.
     if (bubbleSpawner_ && state_.steps % scene_.bubbles.pocketInterval == 0)
         createBubbles(state_.frame + 1);
+    return report;
+}
+
+bool Simulation::moveBodiesAndWater(double dt) {
+    WcsphSolver& water = *solver_;
+    StepPhases& phases = water.phases();
+    if (!water.hasDynamicBodies()) {
+        bool finite = true;
+        inPhase(phases, StepPhases::Integrate,
+                [&] { finite = !water.integrate(state_.fluid, dt); });
+        return finite;
+    }
+    inPhase(phases, StepPhases::Bodies, [&] { water.computeBodyReactions(state_.fluid, dt); });
+    bool bodiesFinite = true;
+    bool waterFinite = true;
+    // The bodies move on their reactions alone and the water on its accelerations alone.
+    runBeside(timed(phases, StepPhases::Bodies,
+                    [&] { bodiesFinite = water.moveDynamicBodies(state_, dt); }),
+              timed(phases, StepPhases::Integrate,
+                    [&] { waterFinite = !water.integrate(state_.fluid, dt); }));
+    return bodiesFinite && waterFinite;
+}
+
+void Simulation::deleteBubbles(double dt) {
+    BubbleTally deleted;
+    bubbleDeletion_->afterStep(state_.bubbles, dt, deleted);
+    frameBubbles_ += deleted;
+    state_.bubblesDeleted += deleted;
 }
 
 void Simulation::createBubbles(int frame) {

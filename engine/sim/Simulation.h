@@ -1,5 +1,7 @@
 #pragma once
-// The simulation: owns the state and steps it in the order of the paper's Table 1.
+// The simulation: owns the state and steps it in the order of the paper's Table 1 (one function,
+// takeStep(); docs/ARCHITECTURE.md, "The step"), frame after frame, with the health checks that
+// stop a bake that blows up.
 #include "bubbles/BubbleDeletion.h"
 #include "bubbles/BubbleSpawner.h"
 #include "core/Interrupter.h"
@@ -57,10 +59,16 @@ private:
                      std::size_t particlesAtStart) const;
     //! Adds the inflow layers due during the step that just went from `from` to `to`.
     void emitInflow(double from, double to);
-    //! The bookkeeping after every solver step: time, kinematic paths, inflow, bubble deletion
-    //! and, every bubbles.pocket_interval steps, creation.
+    //! One step of at most `timeToFrameEnd` seconds, in the paper's Table 1 order: neighbours,
+    //! particle interactions, rigid and bubble interactions and the move, then time, kinematic
+    //! paths and inflow, bubble deletion and, every bubbles.pocket_interval steps, creation.
     //! `frameEnd` is the time the frame under way ends at (s).
-    void afterStep(const StepReport& report, double frameEnd);
+    StepReport takeStep(double timeToFrameEnd, double frameEnd);
+    //! The dynamic bodies' reactions and motion beside the water's integration; false when
+    //! either is no longer finite.
+    bool moveBodiesAndWater(double dt);
+    //! Applies the deletion rules after a step of `dt` seconds and counts what they deleted.
+    void deleteBubbles(double dt);
     //! Turns air pockets of the last step's grid into bubbles born in `frame`, within what is
     //! left of the frame's creation limit.
     void createBubbles(int frame);

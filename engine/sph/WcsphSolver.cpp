@@ -7,7 +7,6 @@
 #include <cmath>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_invoke.h>
 #include <tbb/parallel_reduce.h>
 
 namespace airtrap {
@@ -83,102 +82,51 @@ float WcsphSolver::densityForPressure(double pressure) const {
                               std::pow(1.0 + pressure / tait_, 1.0 / kTaitGamma));
 }
 
-StepReport WcsphSolver::step(SimulationState& state, double timeToFrameEnd) {
-    StepReport report;
-    ParticleSet& fluid = state.fluid;
-    sortWaterAndPlaceBodies(state, report);
-    if (boundary_.movingLayer().size() > 0) {
-        StepPhases::Scope scope(phases_, StepPhases::Bodies);
-        boundary_.findMovingLayerPairs(grid_, sortedPositions_, kernel_.supportRadius());
-    }
-    report.timeStep = chooseTimeStep(report.maxSpeed, state.lastMaxAcceleration, timeToFrameEnd);
-    const InteractionInputs inputs{fluid, sortedPositions_, grid_, boundary_};
-    {
-        StepPhases::Scope scope(phases_, StepPhases::Density);
-        const int interval = settings_.shepardInterval;
-        if (interval > 0 && state.steps > 0 && state.steps % interval == 0)
-            shepardFilter(fluid);
-        densityRates_.resize(fluid.size());
-        passes_.densityRates(inputs, densityRates_, neighbors_);
-        report.maxDensityDeviation = advanceDensities(fluid, report.timeStep);
-    }
-    computeForcesAndMeasureBubbles(state, inputs, report);
-    report.nonFinite = !moveBodiesAndWater(state, inputs, report.timeStep);
-    state.lastMaxAcceleration = report.maxAcceleration;
-    state.lastTimeStep = report.timeStep;
-    ++state.steps;
-    return report;
-}
-
-void WcsphSolver::sortWaterAndPlaceBodies(SimulationState& state, StepReport& report) {
-    const auto sortWater = [&] {
-        StepPhases::Scope scope(phases_, StepPhases::Neighbours);
-        sortByCell(state.fluid, report);
-    };
+bool WcsphSolver::bodiesToPlace(const SimulationState& state) const {
     // Bodies of bubbles deleted since the last step must leave too.
-    if (!anyBodyMoves_ && state.bubbles.empty() && bodies_.size() == firstBubble_) {
-        sortWater();
-        return;
-    }
-    // The water's sort and the bodies' placing share no data. Side by side, the short serial
-    // parts of the placing fill the sort's gaps instead of keeping the other thread waiting.
-    tbb::parallel_invoke(sortWater, [&] {
-        StepPhases::Scope scope(phases_, StepPhases::Bodies);
-        placeBodies(state);
-    });
+    return anyBodyMoves_ || !state.bubbles.empty() || bodies_.size() != firstBubble_;
 }
 
-void WcsphSolver::computeForcesAndMeasureBubbles(SimulationState& state,
-                                                 const InteractionInputs& inputs,
-                                                 StepReport& report) {
-    const auto forces = [&] {
-        StepPhases::Scope scope(phases_, StepPhases::Forces);
-        accelerations_.resize(inputs.fluid.size());
-        const bool recordContacts = boundary_.hasDynamicBodies();
-        if (recordContacts)
-            contacts_.resize(inputs.fluid.size());
-        report.maxAcceleration =
-            passes_.accelerations(inputs, neighbors_, pressureOverDensity2_, report.timeStep,
-                                  accelerations_, recordContacts ? &contacts_ : nullptr);
-    };
-    if (!bubbles_ || !BubbleDynamics::measureDue(state.steps, state.bubbles)) {
-        forces();
-        return;
-    }
-    // Both only read the water; the bubbles' few tasks join the force pass's instead of
-    // waiting for it to end.
-    tbb::parallel_invoke(forces, [&] {
-        StepPhases::Scope scope(phases_, StepPhases::BubbleForces);
-        bubbles_->measureSurroundings(state.steps, bodies_, firstBubble_, state.bubbles,
-                                      inputs.fluid, sortedPositions_, grid_);
-    });
+void WcsphSolver::pairMovingBoundary() {
+    if (boundary_.movingLayer().size() > 0)
+        boundary_.findMovingLayerPairs(grid_, sortedPositions_, kernel_.supportRadius());
 }
 
-bool WcsphSolver::moveBodiesAndWater(SimulationState& state, const InteractionInputs& inputs,
-                                     double dt) {
-    if (!boundary_.hasDynamicBodies()) {
-        StepPhases::Scope scope(phases_, StepPhases::Integrate);
-        return !integrate(state.fluid, dt);
-    }
-    {
-        StepPhases::Scope scope(phases_, StepPhases::Bodies);
-        passes_.bodyReactions(inputs, pressureOverDensity2_, contacts_, dt, reactions_);
-    }
-    bool bodiesFinite = true;
-    bool waterFinite = true;
-    // The bodies move on their reactions alone and the water on its accelerations alone: the
-    // serial rigid-body step runs beside the water's parallel update instead of leaving the
-    // other threads idle. Their phase times overlap.
-    tbb::parallel_invoke(
-        [&] {
-            StepPhases::Scope scope(phases_, StepPhases::Bodies);
-            bodiesFinite = moveDynamicBodies(state, dt);
-        },
-        [&] {
-            StepPhases::Scope scope(phases_, StepPhases::Integrate);
-            waterFinite = !integrate(state.fluid, dt);
-        });
-    return bodiesFinite && waterFinite;
+InteractionInputs WcsphSolver::inputs(const ParticleSet& fluid) const {
+    return InteractionInputs{fluid, sortedPositions_, grid_, boundary_};
+}
+
+void WcsphSolver::computeDensities(ParticleSet& fluid, std::uint64_t step, double dt,
+                                   StepReport& report) {
+    const int interval = settings_.shepardInterval;
+    if (interval > 0 && step > 0 && step % interval == 0)
+        shepardFilter(fluid);
+    densityRates_.resize(fluid.size());
+    passes_.densityRates(inputs(fluid), densityRates_, neighbors_);
+    report.maxDensityDeviation = advanceDensities(fluid, dt);
+}
+
+void WcsphSolver::computeForces(const ParticleSet& fluid, double dt, StepReport& report) {
+    accelerations_.resize(fluid.size());
+    const bool recordContacts = boundary_.hasDynamicBodies();
+    if (recordContacts)
+        contacts_.resize(fluid.size());
+    report.maxAcceleration =
+        passes_.accelerations(inputs(fluid), neighbors_, pressureOverDensity2_, dt, accelerations_,
+                              recordContacts ? &contacts_ : nullptr);
+}
+
+bool WcsphSolver::bubbleSurroundingsDue(const SimulationState& state) const {
+    return bubbles_ && BubbleDynamics::measureDue(state.steps, state.bubbles);
+}
+
+void WcsphSolver::measureBubbleSurroundings(SimulationState& state) {
+    bubbles_->measureSurroundings(state.steps, bodies_, firstBubble_, state.bubbles, state.fluid,
+                                  sortedPositions_, grid_);
+}
+
+void WcsphSolver::computeBodyReactions(const ParticleSet& fluid, double dt) {
+    passes_.bodyReactions(inputs(fluid), pressureOverDensity2_, contacts_, dt, reactions_);
 }
 
 void WcsphSolver::followPaths(SimulationState& state) {
@@ -297,9 +245,9 @@ double WcsphSolver::chooseTimeStep(double maxSpeed, double lastMaxAcceleration,
 }
 
 void WcsphSolver::shepardFilter(ParticleSet& fluid) {
-    // ρᵢ = Σⱼ mⱼWᵢⱼ / Σⱼ (mⱼ/ρⱼ)Wᵢⱼ over the water, the particle itself included (METHOD-NOTES §2):
-    // removes the slow drift of the continuity density without the surface deficiency of a
-    // plain summation.
+    // ρᵢ = Σⱼ mⱼWᵢⱼ / Σⱼ (mⱼ/ρⱼ)Wᵢⱼ over the water, the particle itself included (docs/METHOD.md
+    // "Density (eq. 2) and Shepard re-initialisation"): removes the slow drift of the continuity
+    // density without the surface deficiency of a plain summation.
     const std::size_t n = fluid.size();
     const float radius2 = kernel_.supportRadius() * kernel_.supportRadius();
     const float selfWeight = kernel_.value(0.0f);

@@ -1,8 +1,9 @@
 #pragma once
-// Weakly compressible SPH (paper §3.1, DESIGN §4): continuity density (eq. 2) with a periodic
-// Shepard re-initialisation, Tait equation of state (eq. 3, γ = 7, c = 10·u_max), Monaghan
-// momentum with artificial viscosity (eq. 1), boundary particles for every rigid body, and the
-// contact impulse of the impulse-based boundary force (eq. 4) for water approaching a body.
+// Weakly compressible SPH (paper §3.1, docs/METHOD.md "Water: weakly compressible SPH" and
+// "Impulse-based boundary force"): continuity density (eq. 2) with a periodic Shepard
+// re-initialisation, Tait equation of state (eq. 3, γ = 7, c = 10·u_max), Monaghan momentum with
+// artificial viscosity (eq. 1), boundary particles for every rigid body, and the contact impulse of
+// the impulse-based boundary force (eq. 4) for water approaching a body.
 #include "bubbles/BubbleDynamics.h"
 #include "rigid/RigidBody.h"
 #include "scene/Scene.h"
@@ -37,10 +38,42 @@ public:
     WcsphSolver(const SolverSettings& settings, const Aabb& domain, std::vector<RigidBody> bodies,
                 std::size_t sceneryCount = 0, const BubbleSettings& bubbles = {});
 
-    //! Takes one step of at most `timeToFrameEnd` seconds; the step is shortened so that frame
-    //! times are met exactly without a sliver of a last step. Reorders the particles; moves the
-    //! dynamic bodies with the water.
-    StepReport step(SimulationState& state, double timeToFrameEnd);
+    // The phases of a step, in the order Simulation::takeStep() runs them (docs/ARCHITECTURE.md,
+    // "The step"). Each reads the water as the phases before it left it.
+
+    //! Whether the bodies' boundary particles must be placed this step: a body moves, or bubbles
+    //! exist or have just been deleted.
+    bool bodiesToPlace(const SimulationState& state) const;
+    //! Sorts the particles by cell onto grid(), dropping those outside the domain; reports how
+    //! many left and the largest speed (for Δt), found in the same sweep.
+    void sortByCell(ParticleSet& fluid, StepReport& report);
+    //! Copies the state's bodies into bodies() (kinematic ones on their paths), makes the
+    //! bubbles' bodies follow the state's bubbles, and places their boundary particles.
+    void placeBodies(SimulationState& state);
+    //! Marks the water near the moving bodies' boundary particles on this step's grid.
+    void pairMovingBoundary();
+    //! Δt from the CFL condition and the last step's largest acceleration, at most
+    //! `timeToFrameEnd`; a frame's end is met exactly without a sliver of a last step.
+    double chooseTimeStep(double maxSpeed, double lastMaxAcceleration, double timeToFrameEnd) const;
+    //! Every shepard_interval steps the Shepard re-initialisation; then ρ advanced by the
+    //! continuity equation (eq. 2) and the pressures of the equation of state (eq. 3).
+    void computeDensities(ParticleSet& fluid, std::uint64_t step, double dt, StepReport& report);
+    //! The momentum equation (eq. 1) with the boundary force's contact impulses (eq. 4).
+    void computeForces(const ParticleSet& fluid, double dt, StepReport& report);
+    //! Whether the water around the bubbles is to be measured this step.
+    bool bubbleSurroundingsDue(const SimulationState& state) const;
+    //! Measures the water around the bubbles (BubbleDynamics) on this step's grid.
+    void measureBubbleSurroundings(SimulationState& state);
+    //! Whether any body moves under the water's forces.
+    bool hasDynamicBodies() const { return boundary_.hasDynamicBodies(); }
+    //! The water's force on each dynamic body's boundary particles, from this step's pass.
+    void computeBodyReactions(const ParticleSet& fluid, double dt);
+    //! The dynamic bodies' contacts and motion over `dt` under those reactions, with the
+    //! bubbles' rise, drag and pair impulses; false when a body's state is no longer finite.
+    //! Touches no water, so it may run beside integrate().
+    bool moveDynamicBodies(SimulationState& state, double dt);
+    //! v ← v + Δt a, x ← x + Δt v; returns whether a NaN or infinity appeared.
+    bool integrate(ParticleSet& fluid, double dt);
 
     //! Puts the kinematic bodies of `state` where their paths have them at state.time.
     void followPaths(SimulationState& state);
@@ -69,34 +102,13 @@ public:
 private:
     //! Re-initialises every density by Shepard interpolation, on this step's sorted particles.
     void shepardFilter(ParticleSet& fluid);
-    //! Sorts the particles by cell, dropping those outside the domain; reports how many left and
-    //! the largest speed (for Δt), found in the same sweep.
-    void sortByCell(ParticleSet& fluid, StepReport& report);
     //! ρ ← max(ρ₀, ρ + Δt dρ/dt) and the pressure terms p/ρ²; returns max |ρ/ρ₀ − 1|.
     double advanceDensities(ParticleSet& fluid, double dt);
-    double chooseTimeStep(double maxSpeed, double lastMaxAcceleration, double timeToFrameEnd) const;
     InteractionConstants interactionConstants() const;
-    //! v ← v + Δt a, x ← x + Δt v; returns whether a NaN or infinity appeared.
-    bool integrate(ParticleSet& fluid, double dt);
-    //! The water sorted by cell and, beside it, the bodies placed when any of them moves or
-    //! bubbles exist or have just been deleted.
-    void sortWaterAndPlaceBodies(SimulationState& state, StepReport& report);
-    //! The force pass and, beside it, the water around the bubbles due a measure
-    //! (BubbleDynamics).
-    void computeForcesAndMeasureBubbles(SimulationState& state, const InteractionInputs& inputs,
-                                        StepReport& report);
-    //! The bodies' reactions and motion and the water's integration; false when either is no
-    //! longer finite.
-    bool moveBodiesAndWater(SimulationState& state, const InteractionInputs& inputs, double dt);
-    //! Copies the state's bodies into bodies_ (kinematic ones on their paths), makes the
-    //! bubbles' bodies follow the state's bubbles, and places their boundary particles.
-    void placeBodies(SimulationState& state);
+    //! What the interaction passes read: the water, its sorted positions, the grid, the bodies.
+    InteractionInputs inputs(const ParticleSet& fluid) const;
     //! Copies the moved bodies back into the state; returns false when one is not finite.
     bool storeMovedBodies(SimulationState& state) const;
-    //! The dynamic bodies' contacts and motion over `dt` under the water's reactions_ (gathered
-    //! before, from the water as the force pass saw it); returns false when a body's state is no
-    //! longer finite. Touches no water, so it may run beside integrate().
-    bool moveDynamicBodies(SimulationState& state, double dt);
 
     SolverSettings settings_;
     CubicSplineKernel kernel_;
