@@ -1,8 +1,8 @@
 #pragma once
 // `airtrap-cli export DIR --format obj|vdb|ply --out OUTDIR [--frames A:B] [--up y|z]`: the
-// sequences of DESIGN §5, written by the engine's SequenceExporter (the editor's Export dialog
-// uses the same). OBJ and VDB need the post stage's results and refuse, before writing anything,
-// frames that lack them.
+// sequences of docs/CLI.md "export", written by the engine's SequenceExporter (the editor's Export
+// dialog uses the same). OBJ and VDB need the post stage's results and refuse, before writing
+// anything, frames that lack them.
 #include "Command.h"
 
 #include <string>

@@ -1,6 +1,6 @@
 #pragma once
-// What `info` says about one cached frame: the JSON object of DESIGN §5 (with the fields that
-// exist in this version; fields are added, never renamed) and a short text for people.
+// What `info` says about one cached frame: the JSON object of docs/CLI.md "info" (with the fields
+// that exist in this version; fields are added, never renamed) and a short text for people.
 #include "cache/CacheManifest.h"
 #include "cache/FrameFile.h"
 

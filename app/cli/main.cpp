@@ -1,4 +1,4 @@
-// airtrap-cli: bake, inspect and export Airtrap scenes without the editor (DESIGN §5).
+// airtrap-cli: bake, inspect and export Airtrap scenes without the editor (docs/CLI.md).
 #include "CliApp.h"
 
 int main(int argc, char** argv) {

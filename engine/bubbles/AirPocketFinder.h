@@ -1,5 +1,5 @@
 #pragma once
-// Finds trapped air pockets on the water's neighbour grid (paper §3.4, DESIGN §4 "Creation"):
+// Finds trapped air pockets on the water's neighbour grid (paper §3.4, docs/METHOD.md "Creation"):
 // a cell is air when it holds no water particle and is not inside a solid (a rigid body or an
 // existing bubble). A 6-connected flood fill from the air cells of the grid's top layer — the
 // open top of the domain — marks the atmosphere; the air cells it does not reach form connected

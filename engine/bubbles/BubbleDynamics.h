@@ -1,6 +1,6 @@
 #pragma once
 // The forces a bubble feels beyond the impulse-based boundary force every body gets (paper
-// §3.3, DESIGN §4 "Bubbles"):
+// §3.3, docs/METHOD.md "Forces" and "Bubble–bubble impulses"):
 //  - the auxiliary buoyancy of eq. 5: a submerged bubble's vertical speed is steered toward the
 //    surrounding water's plus the Stokes speed v_s = 2/9 g R²/ν, capped. The water's pressure
 //    gives a light body its buoyancy by itself, but how fast a sphere a few particles across

@@ -1,5 +1,5 @@
 #pragma once
-// Sizes a bubble for an air pocket (paper §3.4, DESIGN §4 "Creation"): at the pocket's centre,
+// Sizes a bubble for an air pocket (paper §3.4, docs/METHOD.md "Creation"): at the pocket's centre,
 // with the pocket's volume (equal-volume radius), shrunk until it keeps half a particle spacing
 // from every water particle, so a new bubble never starts inside the water. Also measures a
 // bubble's area fraction in water: the share of points spread evenly over its surface that have a

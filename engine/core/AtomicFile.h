@@ -1,6 +1,7 @@
 #pragma once
 // Crash-safe file replacement: a reader sees either the old file or the complete new one, never a
-// half-written one. The cache relies on this for frames and the manifest (DESIGN §5, §8).
+// half-written one. The cache relies on this for frames and the manifest (docs/CACHE_FORMAT.md
+// "Writing: the atomic protocol").
 #include <cstddef>
 #include <cstdint>
 #include <string>

@@ -1,9 +1,9 @@
 #pragma once
 // Bubbles as points for instancing a sphere in a renderer (`bubbles_0001.ply` and
-// `subgrid_0001.ply`; DESIGN §5): binary little-endian PLY 1.0, one `vertex` element with float
-// x y z (m), float pscale (radius, m: Houdini's and Blender's instancing scale), float vx vy vz
-// (m/s; the velocity v, one property per component as PLY has no vectors), float age (s) and
-// uint id (stable for a bubble's life).
+// `subgrid_0001.ply`; docs/CLI.md "export"): binary little-endian PLY 1.0, one `vertex` element
+// with float x y z (m), float pscale (radius, m: Houdini's and Blender's instancing scale), float
+// vx vy vz (m/s; the velocity v, one property per component as PLY has no vectors), float age (s)
+// and uint id (stable for a bubble's life).
 #include "io/UpAxis.h"
 
 #include <cstdint>

@@ -24,7 +24,7 @@ public:
     static void write(const std::string& path, const ParticleSet& particles,
                       const std::vector<std::string>& comments = {}, UpAxis up = UpAxis::Y);
 
-    //! "particles_0001.ply": four digits, more from frame 10000 on (DESIGN §5).
+    //! "particles_0001.ply": four digits, more from frame 10000 on (docs/CLI.md "export").
     static std::string fileName(int frame);
 
     //! Bytes of one vertex in the binary body.

@@ -1,6 +1,7 @@
 #pragma once
 // Writes a baked (and, for meshes and volumes, post-processed) cache as the file sequences
-// renderers read (DESIGN §5), for `airtrap-cli export` and the editor's Export dialog alike:
+// renderers read (docs/CLI.md "export"), for `airtrap-cli export` and the editor's Export dialog
+// alike:
 //   ply  particles_0001.ply                 water particles (PlyExporter)
 //        bubbles_0001.ply                   bubbles as points for instancing (BubblePoints), when
 //                                           the scene simulates bubbles

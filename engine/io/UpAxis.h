@@ -1,8 +1,8 @@
 #pragma once
-// Exports are in metres with y up, as the simulation is (DESIGN §4); renderers that want z up
-// (Blender's scene axes, most CAD) get the same picture turned a quarter about x: what was up
-// points along +z and what pointed at the viewer (+z) points away along +y, a proper rotation,
-// so meshes keep their winding.
+// Exports are in metres with y up, as the simulation is (docs/SCENE_FORMAT.md, docs/CLI.md
+// "export"); renderers that want z up (Blender's scene axes, most CAD) get the same picture turned
+// a quarter about x: what was up points along +z and what pointed at the viewer (+z) points away
+// along +y, a proper rotation, so meshes keep their winding.
 #include "core/Math.h"
 
 namespace airtrap {

@@ -1,4 +1,5 @@
-// One of the few translation units that include OpenVDB's tools (STYLE: they are heavy).
+// One of the few translation units that include OpenVDB's tools: their headers take long to
+// compile, so they stay out of headers and out of most .cpp files.
 #include "io/VdbExporter.h"
 
 #include "core/AtomicFile.h"

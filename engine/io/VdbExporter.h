@@ -1,6 +1,6 @@
 #pragma once
-// The water as OpenVDB volumes, one file per frame (`fluid_0001.vdb`, DESIGN §5), named the way
-// renderers look for them without renaming:
+// The water as OpenVDB volumes, one file per frame (`fluid_0001.vdb`, docs/CLI.md "export"), named
+// the way renderers look for them without renaming:
 //   surface  float, level-set class: signed distance in metres, negative inside the water
 //   density  float, fog-volume class: 0 outside, rising through the surface's band to 1 inside
 //            (Blender's volume shader reads `density`)

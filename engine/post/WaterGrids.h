@@ -1,6 +1,6 @@
 #pragma once
 // The OpenVDB side of WaterVolume. Include only from .cpp files that already pay for OpenVDB's
-// headers (STYLE: keep them in few translation units).
+// headers (they take long to compile: the fewer translation units include them, the better).
 #include <openvdb/openvdb.h>
 
 namespace airtrap {

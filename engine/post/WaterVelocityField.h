@@ -1,8 +1,8 @@
 #pragma once
 // The water's velocity anywhere, interpolated from a cached frame's particles: the Shepard-
-// normalised SPH average Σ v_j W_j / Σ W_j over the particles within the kernel's support (DESIGN
-// §4 "Sub-grid bubbles"). Particles are binned once into a hashed grid of support-sized cells, so
-// a query visits 27 cells.
+// normalised SPH average Σ v_j W_j / Σ W_j over the particles within the kernel's support
+// (docs/METHOD.md "Sub-grid bubbles"). Particles are binned once into a hashed grid of
+// support-sized cells, so a query visits 27 cells.
 #include "sph/ParticleSet.h"
 
 #include <cstdint>

@@ -1,4 +1,5 @@
-// One of the few translation units that include OpenVDB's tools (STYLE: they are heavy).
+// One of the few translation units that include OpenVDB's tools: their headers take long to
+// compile, so they stay out of headers and out of most .cpp files.
 #include "post/WaterVolume.h"
 
 #include "core/Error.h"

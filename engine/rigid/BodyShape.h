@@ -1,8 +1,9 @@
 #pragma once
 // The solid a rigid body occupies, in its shape frame (box, sphere and cylinder centred at the
 // origin, a mesh in its file's coordinates, the tank as the open-top box the water lives in):
-// signed distance and outward normal for rigid–rigid contacts (DESIGN §4) and the t = 0 overlap
-// check. Mesh shapes answer from their OpenVDB signed distance field.
+// signed distance and outward normal for rigid–rigid contacts (docs/METHOD.md "Contacts between
+// bodies") and the t = 0 overlap check. Mesh shapes answer from their OpenVDB signed distance
+// field.
 #include "core/Math.h"
 #include "rigid/SignedDistanceField.h"
 

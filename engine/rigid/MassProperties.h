@@ -1,6 +1,7 @@
 #pragma once
-// Mass, centre of mass and inertia tensor of a solid of uniform density: what a dynamic rigid
-// body needs for the impulse of DESIGN §4 (1/M and I⁻¹ in the denominator of j).
+// Mass, centre of mass and inertia tensor of a solid of uniform density: what a dynamic rigid body
+// needs for the impulse of docs/METHOD.md "Impulse-based boundary force" (1/M and I⁻¹ in the
+// denominator of j).
 #include "core/Math.h"
 
 namespace airtrap {

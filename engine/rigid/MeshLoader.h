@@ -1,7 +1,7 @@
 #pragma once
-// Reads a rigid body's shape from a mesh file and refuses, with the path and the reason, any
-// mesh that does not bound a solid (DESIGN §8): mass properties, the signed distance field and
-// inside tests all assume a closed, consistently oriented surface.
+// Reads a rigid body's shape from a mesh file and refuses, with the path and the reason, any mesh
+// that does not bound a solid (docs/SCENE_FORMAT.md "Validation"): mass properties, the signed
+// distance field and inside tests all assume a closed, consistently oriented surface.
 #include "rigid/TriangleMesh.h"
 
 #include <string>

@@ -1,6 +1,7 @@
 #pragma once
-// A body the water interacts with through its boundary particles (DESIGN §4): the static
-// container and obstacles, and the scene's static, dynamic and kinematic bodies.
+// A body the water interacts with through its boundary particles (docs/METHOD.md "Boundary
+// particles"): the static container and obstacles, and the scene's static, dynamic and kinematic
+// bodies.
 //
 // Frames: the shape frame is the one the scene describes the solid in (a box's centre, a mesh
 // file's origin). The body frame is the one the boundary particles and the state live in: the

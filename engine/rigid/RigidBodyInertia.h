@@ -6,7 +6,8 @@ namespace airtrap {
 
 //! Mass and body-frame inertia tensor about the centre of mass. Static and kinematic bodies use
 //! infinite(): infinite mass and inertia, zero inverses, so they take no part in an impulse's
-//! response (their term in the contact denominator is 0, DESIGN §4).
+//! response (their term in the contact denominator is 0, docs/METHOD.md "Impulse-based boundary
+//! force").
 class RigidBodyInertia {
 public:
     //! `mass` in kg (finite, > 0); `inertiaBody` in kg·m² about the centre of mass in the body
@@ -25,7 +26,8 @@ public:
     const Mat3d& inverseInertiaBody() const { return inverseInertiaBody_; } //!< 1/(kg·m²)
 
     //! World-frame inverse inertia for a body at `orientation`: I⁻¹ = R I_body⁻¹ Rᵀ
-    //! (METHOD-NOTES §1; Baraff, "Rigid Body Simulation", SIGGRAPH 2001 course notes).
+    //! (docs/METHOD.md "Impulse-based boundary force"; Baraff, "Rigid Body Simulation",
+    //! SIGGRAPH 2001 course notes).
     Mat3d inverseInertiaWorld(const Quatd& orientation) const;
     //! World-frame inertia R I_body Rᵀ (kg·m²), for angular momentum L = I ω; finite bodies only.
     Mat3d inertiaWorld(const Quatd& orientation) const;

@@ -1,7 +1,7 @@
 #pragma once
 // The part of a rigid body that changes every step: what the frame cache stores per body (chunk
-// BODY, docs/CACHE_FORMAT.md) and what `info --json` reports (DESIGN §5). Mass, inertia, shape and
-// name are fixed for a bake and come from the scene.
+// BODY, docs/CACHE_FORMAT.md) and what `info --json` reports (docs/CLI.md "info"). Mass, inertia,
+// shape and name are fixed for a bake and come from the scene.
 #include "core/Math.h"
 
 namespace airtrap {

@@ -1,7 +1,7 @@
 #pragma once
-// Contacts between rigid bodies (DESIGN §4: "rigid–rigid contacts use the same impulse with both
-// bodies' terms"): body–container, body–obstacle and body–body. Once per sub-step, after the
-// bodies' velocities have taken the step's forces and before their poses move.
+// Contacts between rigid bodies (docs/METHOD.md "Contacts between bodies": the impulse of the
+// water's contacts, with both bodies' terms): body–container, body–obstacle and body–body. Once per
+// sub-step, after the bodies' velocities have taken the step's forces and before their poses move.
 //
 // Contact points: the surface under each boundary particle of a dynamic body, tested against
 // the other body's signed distance (and the other way round when both are dynamic); a sphere

@@ -1,6 +1,6 @@
 #pragma once
-// Impulses on a rigid body: the response used by the impulse-based boundary force (IBF, DESIGN §4,
-// METHOD-NOTES §1) for water–body and body–body contacts.
+// Impulses on a rigid body: the response used by the impulse-based boundary force (IBF,
+// docs/METHOD.md "Impulse-based boundary force") for water–body and body–body contacts.
 #include "rigid/RigidBodyInertia.h"
 #include "rigid/RigidBodyState.h"
 

@@ -1,5 +1,5 @@
 #pragma once
-// Time integration of a dynamic rigid body (DESIGN §4, METHOD-NOTES §1 step 5). The solver
+// Time integration of a dynamic rigid body (docs/METHOD.md "Rigid body motion"). The solver
 // accumulates the force and torque on the body (fluid force, contact impulses / Δt, drag) and
 // calls step() once per sub-step; static and kinematic bodies are not integrated here.
 #include "rigid/RigidBodyInertia.h"

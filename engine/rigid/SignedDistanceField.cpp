@@ -1,4 +1,4 @@
-// The only translation unit that includes OpenVDB (STYLE: keep its heavy headers in one .cpp).
+// The only translation unit of rigid/ that includes OpenVDB: its headers take long to compile.
 #include "rigid/SignedDistanceField.h"
 
 #include "core/Error.h"

@@ -1,7 +1,7 @@
 #pragma once
 // Signed distance to a mesh body's surface on a sparse voxel grid (OpenVDB), in the body's frame:
-// contact normals, inside tests and surface checks for mesh shapes (DESIGN §4). OpenVDB stays in
-// the .cpp: its headers cost a minute of compile time each.
+// contact normals, inside tests and surface checks for mesh shapes (docs/METHOD.md "Contacts
+// between bodies"). OpenVDB stays in the .cpp: its headers cost a minute of compile time each.
 #include "core/Math.h"
 
 #include <limits>

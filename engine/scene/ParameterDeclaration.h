@@ -1,7 +1,7 @@
 #pragma once
 // One scene parameter, declared once: its JSON key, label, unit, range, default and help. The JSON
 // reader and validator, `--set`, docs/SCENE_FORMAT.md and the editor's parameter panel all read
-// this declaration instead of keeping their own copy (STYLE "Declare each parameter once").
+// this declaration instead of keeping their own copy, so a rename or a new range cannot miss one.
 #include "core/Math.h"
 
 #include <string>

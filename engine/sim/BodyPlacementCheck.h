@@ -1,8 +1,8 @@
 #pragma once
-// The scene checks that need the bodies built (DESIGN §8): a mesh that cannot be used, a body
-// reaching outside the domain, and — as warnings, before a bake — bodies overlapping the water,
-// an obstacle or each other at t = 0. SceneValidator runs it after the field rules pass; it
-// lives here because it builds bodies the way the solver does.
+// The scene checks that need the bodies built (docs/SCENE_FORMAT.md "Validation"): a mesh that
+// cannot be used, a body reaching outside the domain, and — as warnings, before a bake — bodies
+// overlapping the water, an obstacle or each other at t = 0. SceneValidator runs it after the field
+// rules pass; it lives here because it builds bodies the way the solver does.
 #include "scene/Scene.h"
 
 #include <string>

@@ -8,7 +8,7 @@
 namespace airtrap {
 
 //! What one frame cost and what it looks like in numbers; stored with the frame in the cache and
-//! shown by `info --json` (DESIGN §5) and the editor's status bar.
+//! shown by `info --json` (docs/CLI.md "info") and the editor's status bar.
 struct FrameStats {
     double wallSeconds = 0.0;                   //!< wall-clock time of the frame's steps
     std::map<std::string, double> phaseSeconds; //!< per phase: neighbours, density, forces, ...

@@ -1,7 +1,7 @@
 #pragma once
 // Cubic spline kernel (Monaghan 1992) written with the support radius H = 2h:
 //   q = r/H, k = 8/(πH³), W = k(6q³ − 6q² + 1) for q ≤ ½, 2k(1 − q)³ for q ≤ 1, 0 beyond.
-// It equals the classic σ = 1/(πh³) form with support 2h (METHOD-NOTES §2).
+// It equals the classic σ = 1/(πh³) form with support 2h (docs/METHOD.md "Kernel").
 #include "core/Math.h"
 
 #include <array>

@@ -1,5 +1,6 @@
 // airtrap-cli end to end: every verb run as a process on a tiny scene, checking exit codes,
-// messages, the cache left behind, bit-identical resume, Ctrl-C and I/O failures (DESIGN §5, §8).
+// messages, the cache left behind, bit-identical resume, Ctrl-C and I/O failures (docs/CLI.md,
+// docs/CACHE_FORMAT.md).
 #include "cache/FrameCache.h"
 #include "cli/CliTestSupport.h"
 #include "support/TestMain.h"

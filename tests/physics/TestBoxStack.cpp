@@ -1,7 +1,7 @@
-// Rigid–rigid contacts (DESIGN §4): three boxes dropped onto each other on the container's floor
-// come to rest as a stack — no bounce, no sinking into each other, no tipping — through the same
-// impulses as the water's contacts. A little water sits in a far corner because a scene needs
-// some.
+// Rigid–rigid contacts (docs/METHOD.md "Contacts between bodies"): three boxes dropped onto each
+// other on the container's floor come to rest as a stack — no bounce, no sinking into each other,
+// no tipping — through the same impulses as the water's contacts. A little water sits in a far
+// corner because a scene needs some.
 #include "sim/Simulation.h"
 #include "support/TestMain.h"
 

@@ -1,4 +1,4 @@
-// Bubbles are created where the water traps air (paper §3.4, DESIGN §4 "Creation"):
+// Bubbles are created where the water traps air (paper §3.4, docs/METHOD.md "Creation"):
 //  - a closed spherical cavity in still water gives exactly one bubble, centred within one grid
 //    cell of the cavity's centre, with a radius within 20 % of the cavity's;
 //  - a cavity in contact with the atmosphere, or filled by a rigid body, gives none;

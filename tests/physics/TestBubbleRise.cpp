@@ -1,6 +1,6 @@
-// A single bubble in still water rises at its capped Stokes speed (paper eq. 5, DESIGN §7
-// "Bubble rise"): after it has settled, its mean vertical speed lies within 15 % of
-// min(2/9 g R²/ν, cap).
+// A single bubble in still water rises at its capped Stokes speed (paper eq. 5, docs/VALIDATION.md
+// "Bubble rise"): after it has settled, its mean vertical speed lies within 15 % of min(2/9 g R²/ν,
+// cap).
 #include "BubbleTestSupport.h"
 #include "sph/WcsphSolver.h"
 #include "support/TestMain.h"

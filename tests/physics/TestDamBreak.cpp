@@ -1,7 +1,7 @@
-// Dam break (DESIGN §6): a water column of width a and height 2a collapses along a dry floor.
-// The surge front Z = z/a against time T = t·√(2g/a) is compared with the experiments of
-// Martin & Moyce (1952) and Koshizuka & Oka (1996), as digitised in PySPH's db_exp_data.py
-// (../shared/data/dambreak_*.csv; the figures used are copied below).
+// Dam break (docs/VALIDATION.md "Dam break"): a water column of width a and height 2a collapses
+// along a dry floor. The surge front Z = z/a against time T = t·√(2g/a) is compared with the
+// experiments of Martin & Moyce (1952) and Koshizuka & Oka (1996), as digitised in PySPH's
+// db_exp_data.py (the figures used are copied below).
 #include "sim/Simulation.h"
 #include "support/TestMain.h"
 

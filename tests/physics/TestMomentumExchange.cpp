@@ -1,7 +1,7 @@
-// Two-way coupling conserves momentum (paper eq. 4, DESIGN §4): the water receives exactly what a
-// body loses. A dense sphere is thrown into a block of water with gravity off, far from the
-// container's walls, so nothing else exchanges momentum with either: over the impact the
-// sphere's momentum loss and the water's gain agree within a few per cent.
+// Two-way coupling conserves momentum (paper eq. 4, docs/METHOD.md "Impulse-based boundary force"):
+// the water receives exactly what a body loses. A dense sphere is thrown into a block of water with
+// gravity off, far from the container's walls, so nothing else exchanges momentum with either: over
+// the impact the sphere's momentum loss and the water's gain agree within a few per cent.
 #include "sim/Simulation.h"
 #include "sph/WcsphSolver.h"
 #include "support/TestMain.h"

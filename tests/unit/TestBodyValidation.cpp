@@ -1,6 +1,6 @@
-// Scene checks for rigid bodies (DESIGN §8): what cannot be baked is refused with the JSON path,
-// the value and what was expected; bodies overlapping the water, an obstacle or each other at
-// t = 0 are warned about before a bake.
+// Scene checks for rigid bodies (docs/SCENE_FORMAT.md "Validation"): what cannot be baked is
+// refused with the JSON path, the value and what was expected; bodies overlapping the water, an
+// obstacle or each other at t = 0 are warned about before a bake.
 #include "scene/SceneValidator.h"
 #include "support/TestMain.h"
 #include "unit/SceneTestSupport.h"

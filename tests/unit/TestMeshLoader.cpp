@@ -1,5 +1,5 @@
-// Mesh loading: OBJ, PLY and STL read to the same indexed solid; every way a mesh can fail to
-// bound a solid is refused with the file's path and the reason (DESIGN §8).
+// Mesh loading: OBJ, PLY and STL read to the same indexed solid; every way a mesh can fail to bound
+// a solid is refused with the file's path and the reason (docs/SCENE_FORMAT.md "Validation").
 #include "MeshTestSupport.h"
 #include "core/Error.h"
 #include "rigid/MeshLoader.h"

@@ -1,6 +1,7 @@
-// OBJ export (DESIGN §5) read back the way renderers' importers read it, with assimp: one object
-// per named mesh with its vertex and triangle counts, positions to float precision, normals that
-// face out, the z-up switch as a proper quarter turn, and sequence names padded to four digits.
+// OBJ export (docs/CLI.md "export") read back the way renderers' importers read it, with assimp:
+// one object per named mesh with its vertex and triangle counts, positions to float precision,
+// normals that face out, the z-up switch as a proper quarter turn, and sequence names padded to
+// four digits.
 #include "core/Error.h"
 #include "io/ObjExporter.h"
 #include "io/SequenceName.h"

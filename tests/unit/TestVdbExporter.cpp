@@ -1,6 +1,6 @@
-// VDB export (DESIGN §5) read back with OpenVDB as a renderer would: `surface` a level set,
-// `density` a fog volume, `vel` velocity vectors, with the voxel size in the transforms and the
-// units and up axis in the metadata; z up is the same water turned a quarter about x; the file
+// VDB export (docs/CLI.md "export") read back with OpenVDB as a renderer would: `surface` a level
+// set, `density` a fog volume, `vel` velocity vectors, with the voxel size in the transforms and
+// the units and up axis in the metadata; z up is the same water turned a quarter about x; the file
 // reads back into the volume it was written from, and a damaged one is refused by name.
 #include "core/AtomicFile.h"
 #include "core/Error.h"

@@ -56,7 +56,8 @@ private Q_SLOTS:
         const TriangleMesh::EdgeCounts edges = mesh.countEdges();
         QCOMPARE(edges.open, std::size_t(0));
         QCOMPARE(edges.misoriented, std::size_t(0));
-        // DESIGN §6: the mesh of a resting pool encloses its water volume within 3 %.
+        // docs/VALIDATION.md "Water surface": the mesh of a resting pool encloses its water
+        // volume within 3 %.
         const double error = mesh.signedVolume() / block.volume() - 1.0;
         QVERIFY2(std::abs(error) < 0.03, qPrintable(QString("volume error %1").arg(error)));
     }

@@ -1,7 +1,7 @@
 #pragma once
-// Asks what to export (DESIGN §5): which sequences (OBJ meshes, VDB volumes, PLY points), which
-// frames, into which folder, with which axis up. The export itself runs in the background
-// (RenderOutputController); this dialog only gathers the request.
+// Asks what to export (docs/CLI.md "export"): which sequences (OBJ meshes, VDB volumes, PLY
+// points), which frames, into which folder, with which axis up. The export itself runs in the
+// background (RenderOutputController); this dialog only gathers the request.
 #include "controller/RenderJob.h"
 
 #include <QDialog>

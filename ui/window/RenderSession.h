@@ -1,9 +1,9 @@
 #pragma once
-// The editor's side of the render outputs (DESIGN §2: FrameCache → Post → Exporters): the
-// Make Render Outputs and Export… actions, a progress bar with a Cancel button in the status bar
-// while they run, and their outcome in the log. The render settings are the document's (an
-// artist tunes the Surface mesh section and runs Post again without re-baking). It talks to the
-// engine only through RenderOutputController.
+// The editor's side of the render outputs (docs/ARCHITECTURE.md "Data flow": FrameCache → Post →
+// Exporters): the Make Render Outputs and Export… actions, a progress bar with a Cancel button in
+// the status bar while they run, and their outcome in the log. The render settings are the
+// document's (an artist tunes the Surface mesh section and runs Post again without re-baking). It
+// talks to the engine only through RenderOutputController.
 #include "controller/RenderJob.h"
 
 #include <QObject>
