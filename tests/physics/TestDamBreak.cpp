@@ -1,13 +1,17 @@
 // Dam break (docs/VALIDATION.md "Dam break"): a water column of width a and height 2a collapses
 // along a dry floor. The surge front Z = z/a against time T = t·√(2g/a) is compared with the
 // experiments of Martin & Moyce (1952) and Koshizuka & Oka (1996), as digitised in PySPH's
-// db_exp_data.py (the figures used are copied below).
+// db_exp_data.py (tests/data/dambreak_*.csv, read by readSeries()).
 #include "sim/Simulation.h"
 #include "support/TestMain.h"
 
 #include <QtTest>
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 using namespace airtrap;
@@ -19,17 +23,40 @@ struct Point {
     double Z;
 };
 
-// Martin, J. C. & Moyce, W. J. (1952), Phil. Trans. R. Soc. A 244, 312–324, Fig. 3, n² = 2,
-// digitised by PySPH (pysph/examples/db_exp_data.py, commit a57e6534): T ≤ 3 only.
-const std::vector<Point> kMartinMoyceSmall = {
-    {0.849, 1.245}, {1.212, 1.443}, {1.602, 1.884}, {2.283, 2.689}, {2.950, 3.728}}; // a = 1.125"
-const std::vector<Point> kMartinMoyceLarge = {
-    {0.832, 1.217}, {1.219, 1.474}, {1.997, 2.292}, {2.547, 2.995}}; // a = 2.25"
-// Koshizuka, S. & Oka, Y. (1996), Nucl. Sci. Eng. 123, 421–434, experiment, same digitisation
-// (the point past T = 3 only brackets the interpolation).
-const std::vector<Point> kKoshizukaOka = {{0.381, 1.111}, {0.769, 1.252}, {1.153, 1.505},
-                                          {1.537, 1.892}, {1.935, 2.241}, {2.323, 2.615},
-                                          {2.719, 3.003}, {3.096, 3.624}};
+//! The points of `series` in the data file `name` (tests/data, dambreak.README.txt) with
+//! 0 < T ≤ maxT, in file order. Columns: series, a second column, T, Z; # starts a comment.
+std::vector<Point> readSeries(const std::string& name, const std::string& series, double maxT) {
+    std::ifstream in(std::string(AIRTRAP_SOURCE_DIR "/tests/data/") + name);
+    if (!in)
+        throw std::runtime_error("cannot read tests/data/" + name);
+    std::vector<Point> points;
+    std::string line;
+    while (std::getline(in, line)) {
+        if (line.empty() || line.front() == '#')
+            continue;
+        std::stringstream fields(line);
+        std::string label, second, t, z;
+        std::getline(fields, label, ',');
+        std::getline(fields, second, ',');
+        std::getline(fields, t, ',');
+        std::getline(fields, z, ',');
+        if (label != series)
+            continue;
+        const Point p{std::stod(t), std::stod(z)};
+        if (p.T > 0.0 && p.T <= maxT)
+            points.push_back(p);
+    }
+    return points;
+}
+
+// Martin & Moyce (1952), Fig. 3, n² = 2, T ≤ 3 only; Koshizuka & Oka (1996), the experiment, with
+// the first point past T = 3, which only brackets the interpolation.
+const std::vector<Point> kMartinMoyceSmall =
+    readSeries("dambreak_martin_moyce_1952.csv", "mm_data_1", 3.0); // a = 1.125"
+const std::vector<Point> kMartinMoyceLarge =
+    readSeries("dambreak_martin_moyce_1952.csv", "mm_data_2", 3.0); // a = 2.25"
+const std::vector<Point> kKoshizukaOka =
+    readSeries("dambreak_koshizuka_oka_1996.csv", "ko_data", 3.1);
 
 constexpr double kWidth = 0.1;           // a, m
 constexpr double kSpacing = kWidth / 25; // 25 particles across the column
@@ -87,6 +114,10 @@ class TestDamBreak : public QObject {
 
 private Q_SLOTS:
     void initTestCase() {
+        // The experiments as the data files hold them: 5 and 4 points to T = 3, 8 to 3.1.
+        QCOMPARE(kMartinMoyceSmall.size(), std::size_t(5));
+        QCOMPARE(kMartinMoyceLarge.size(), std::size_t(4));
+        QCOMPARE(kKoshizukaOka.size(), std::size_t(8));
         Simulation simulation(damBreak());
         Interrupter interrupter;
         const double timeScale = std::sqrt(2.0 * kGravity / kWidth);

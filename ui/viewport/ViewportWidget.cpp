@@ -209,12 +209,6 @@ void ViewportWidget::setBubblesThroughWater(bool through) {
     update();
 }
 
-void ViewportWidget::setParticleRadius(float metres) {
-    particleRadiusOverride_ = metres > 0.0f ? std::optional<float>(metres) : std::nullopt;
-    updateParticleLook();
-    update();
-}
-
 void ViewportWidget::setParticleSize(float factor) {
     particleSize_ = std::clamp(factor, kMinParticleSize, kMaxParticleSize);
     updateParticleLook();
@@ -228,7 +222,7 @@ void ViewportWidget::setSpeedScale(float metresPerSecond) {
 }
 
 float ViewportWidget::particleRadius() const {
-    return particleRadiusOverride_.value_or(0.5f * sceneSpacing_) * particleSize_;
+    return 0.5f * sceneSpacing_ * particleSize_;
 }
 
 void ViewportWidget::updateParticleLook() {

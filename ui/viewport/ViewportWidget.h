@@ -54,8 +54,6 @@ public:
 
     //! The camera, read-only: to project scene points to widget pixels (tests, overlays).
     const OrbitCamera& camera() const { return camera_; }
-    //! True once setScene() has been called.
-    bool hasScene() const { return hasScene_; }
     //! True while a frame is shown (setFrame() with a frame).
     bool isPlayback() const { return frame_ != nullptr; }
     //! The highlighted item.
@@ -132,8 +130,6 @@ public Q_SLOTS:
     //! On, bubbles are drawn over any water in front of them, as if the water were clear, but
     //! still hidden by bodies in front; off, water in front hides them like any solid.
     void setBubblesThroughWater(bool through);
-    //! Draws particles with this radius (metres) instead of the default, half the scene's spacing.
-    void setParticleRadius(float metres);
     //! Draws particles at `factor` times the default radius (clamped to kParticleSizeRange): small
     //! points to see the flow inside the water, large ones to see it as a body.
     void setParticleSize(float factor);
@@ -196,7 +192,6 @@ private:
     SceneItem selection_;
     std::shared_ptr<const FrameData> frame_;
 
-    std::optional<float> particleRadiusOverride_;
     float particleSize_ = 1.0f;
     std::optional<float> speedScaleOverride_;
     bool showGrid_ = true;

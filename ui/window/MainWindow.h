@@ -44,7 +44,6 @@ public:
     SceneDocument& document() const { return *document_; }
     ViewportWidget* viewport() const { return viewport_; }
     SceneTreePanel* sceneTree() const { return sceneTree_; }
-    ParameterPanel* parameterPanel() const { return parameterPanel_; }
     TimelineWidget* timeline() const { return timeline_; }
     SimulationController* controller() const { return controller_; }
     RenderOutputController* renderController() const { return renderController_; }
