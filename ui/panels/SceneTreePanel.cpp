@@ -42,7 +42,7 @@ SceneTreePanel::SceneTreePanel(SceneDocument& document, QWidget* parent)
     connect(model_, &SceneTreeModel::editRefused, this, &SceneTreePanel::editRefused);
     // New rows (added, undone removals) and new documents are shown unfolded.
     connect(model_, &QAbstractItemModel::rowsInserted, view_,
-            [this](const QModelIndex& parent) { view_->expand(parent); });
+            [this](const QModelIndex& insertedUnder) { view_->expand(insertedUnder); });
     connect(model_, &QAbstractItemModel::modelReset, view_, &QTreeView::expandAll);
     updateButtons();
 }

@@ -483,12 +483,12 @@ void MainWindow::onTimelineFrameChanged(int frame) {
     statusFields_->showFrameNumber(frame, document_->scene().frames.fps);
 }
 
-void MainWindow::onFrameLoaded(int frame, std::shared_ptr<const FrameData> data) {
+void MainWindow::onFrameLoaded(int frame, std::shared_ptr<const FrameData> frameData) {
     // Scrubbing asks for many frames; only the one the timeline still points at is shown.
     if (frame != timeline_->currentFrame())
         return;
-    statusFields_->showFrame(frame, *data);
-    viewport_->setFrame(std::move(data));
+    statusFields_->showFrame(frame, *frameData);
+    viewport_->setFrame(std::move(frameData));
     // frameShown() follows once the frame's post results (or their absence) are known too.
     postResultLoader_->request(cacheDirectory(), frame);
 }

@@ -118,7 +118,7 @@ private:
     void showError(const QString& title, const QString& message);
 
     void onDocumentChanged();
-    void onFrameLoaded(int frame, std::shared_ptr<const FrameData> data);
+    void onFrameLoaded(int frame, std::shared_ptr<const FrameData> frameData);
     void onTimelineFrameChanged(int frame);
     void pointLoaderAtCache();
     void selectSomethingToEdit();
