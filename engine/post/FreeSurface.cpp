@@ -62,15 +62,7 @@ bool facesTheSolid(const TriangleMesh& water, std::size_t t, const FrameSolids& 
 
 //! Per vertex of `mesh`: whether it ends an edge that only one triangle uses.
 std::vector<char> openEdgeVertices(const TriangleMesh& mesh) {
-    std::vector<std::uint64_t> edges;
-    edges.reserve(3 * mesh.triangles.size());
-    for (const TriangleMesh::Triangle& t : mesh.triangles)
-        for (int corner = 0; corner < 3; ++corner) {
-            const std::uint64_t a = t[corner];
-            const std::uint64_t b = t[(corner + 1) % 3];
-            edges.push_back(std::min(a, b) << 32 | std::max(a, b));
-        }
-    std::sort(edges.begin(), edges.end());
+    const std::vector<std::uint64_t> edges = mesh.sortedEdgeKeys();
     std::vector<char> open(mesh.vertices.size(), 0);
     for (std::size_t e = 0; e < edges.size();) {
         std::size_t same = e + 1;

@@ -1,5 +1,6 @@
 #include "rigid/TriangleMesh.h"
 
+#include <algorithm>
 #include <unordered_map>
 #include <utility>
 
@@ -62,9 +63,7 @@ TriangleMesh::EdgeCounts TriangleMesh::countEdges() const {
         for (int corner = 0; corner < 3; ++corner) {
             const std::uint32_t from = tri[corner];
             const std::uint32_t to = tri[(corner + 1) % 3];
-            const std::uint64_t low = std::min(from, to);
-            const std::uint64_t high = std::max(from, to);
-            auto& [upward, downward] = uses[(low << 32) | high];
+            auto& [upward, downward] = uses[edgeKey(from, to)];
             (from < to ? upward : downward) += 1;
         }
     EdgeCounts counts;
@@ -80,6 +79,16 @@ TriangleMesh::EdgeCounts TriangleMesh::countEdges() const {
             ++counts.paired;
     }
     return counts;
+}
+
+std::vector<std::uint64_t> TriangleMesh::sortedEdgeKeys() const {
+    std::vector<std::uint64_t> keys;
+    keys.reserve(3 * triangles.size());
+    for (const Triangle& tri : triangles)
+        for (int corner = 0; corner < 3; ++corner)
+            keys.push_back(edgeKey(tri[corner], tri[(corner + 1) % 3]));
+    std::sort(keys.begin(), keys.end());
+    return keys;
 }
 
 void TriangleMesh::flipOrientation() {

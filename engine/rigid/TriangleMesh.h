@@ -3,6 +3,7 @@
 // mass properties, a signed distance field and boundary particles.
 #include "core/Math.h"
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -40,6 +41,13 @@ struct TriangleMesh {
     double signedVolume() const;
 
     EdgeCounts countEdges() const;
+    //! One key per undirected edge: the lower vertex index in the high 32 bits, the higher below.
+    static std::uint64_t edgeKey(std::uint32_t a, std::uint32_t b) {
+        return std::uint64_t(std::min(a, b)) << 32 | std::max(a, b);
+    }
+    //! The edge keys of every triangle, three each, sorted: an edge that k triangles share
+    //! appears k times in a row.
+    std::vector<std::uint64_t> sortedEdgeKeys() const;
 
     //! Reverses every triangle's winding, which turns its normal around.
     void flipOrientation();

@@ -58,6 +58,18 @@ class TestScreenshot : public QObject {
     QString scenePath_;
     QString cacheDir_;
 
+    //! Frame 3 of the test scene at 480×320 with `extra` flags, saved as `name` in the scratch
+    //! folder; a null image when the editor failed.
+    QImage frameThreeShot(const QString& name, const QStringList& extra) {
+        const QString png = folder_.filePath(name);
+        const Run run =
+            runEditor(QStringList{QStringLiteral("--scene"), scenePath_, QStringLiteral("--frame"),
+                                  QStringLiteral("3"), QStringLiteral("--screenshot"), png,
+                                  QStringLiteral("--size"), QStringLiteral("480x320")} +
+                      extra);
+        return run.exitCode == 0 ? QImage(png) : QImage();
+    }
+
 private Q_SLOTS:
     void initTestCase() {
         QVERIFY(folder_.isValid());
@@ -107,28 +119,20 @@ private Q_SLOTS:
     }
 
     void layersAndCameraComeFromTheFlags() {
-        const auto shot = [&](const QString& name, const QStringList& extra) {
-            const QString png = folder_.filePath(name);
-            const Run run = runEditor(
-                QStringList{QStringLiteral("--scene"), scenePath_, QStringLiteral("--frame"),
-                            QStringLiteral("3"), QStringLiteral("--screenshot"), png,
-                            QStringLiteral("--size"), QStringLiteral("480x320")} +
-                extra);
-            return run.exitCode == 0 ? QImage(png) : QImage();
-        };
-        const QImage particles = shot(QStringLiteral("particles.png"),
-                                      {QStringLiteral("--show"), QStringLiteral("particles")});
-        const QImage bubblesOnly = shot(QStringLiteral("bubbles.png"),
-                                        {QStringLiteral("--show"), QStringLiteral("bubbles")});
+        const QImage particles =
+            frameThreeShot(QStringLiteral("particles.png"),
+                           {QStringLiteral("--show"), QStringLiteral("particles")});
+        const QImage bubblesOnly = frameThreeShot(
+            QStringLiteral("bubbles.png"), {QStringLiteral("--show"), QStringLiteral("bubbles")});
         QVERIFY(!particles.isNull() && !bubblesOnly.isNull());
         QVERIFY(waterPixels(particles) > particles.width() * particles.height() / 100);
         QVERIFY(waterPixels(bubblesOnly) < bubblesOnly.width() * bubblesOnly.height() / 500);
         // The water column seen from the front and from the top covers different pixels.
-        const QImage front = shot(QStringLiteral("front.png"),
-                                  {QStringLiteral("--camera"), QStringLiteral("front")});
-        const QImage top =
-            shot(QStringLiteral("top.png"), {QStringLiteral("--camera"), QStringLiteral("top"),
-                                             QStringLiteral("--no-selection")});
+        const QImage front = frameThreeShot(QStringLiteral("front.png"),
+                                            {QStringLiteral("--camera"), QStringLiteral("front")});
+        const QImage top = frameThreeShot(
+            QStringLiteral("top.png"),
+            {QStringLiteral("--camera"), QStringLiteral("top"), QStringLiteral("--no-selection")});
         QVERIFY(!front.isNull() && !top.isNull());
         QVERIFY(front != top);
 
@@ -146,14 +150,8 @@ private Q_SLOTS:
 
     void particleSizeAndSurfaceShadingComeFromTheFlags() {
         const auto shot = [&](const QString& name, const QStringList& extra) {
-            const QString png = folder_.filePath(name);
-            const Run run = runEditor(
-                QStringList{QStringLiteral("--scene"), scenePath_, QStringLiteral("--frame"),
-                            QStringLiteral("3"), QStringLiteral("--screenshot"), png,
-                            QStringLiteral("--size"), QStringLiteral("480x320"),
-                            QStringLiteral("--show"), QStringLiteral("particles")} +
-                extra);
-            return run.exitCode == 0 ? QImage(png) : QImage();
+            return frameThreeShot(
+                name, QStringList{QStringLiteral("--show"), QStringLiteral("particles")} + extra);
         };
         const QImage standard = shot(QStringLiteral("standard.png"), {});
         const QImage points = shot(QStringLiteral("points.png"),

@@ -60,15 +60,7 @@ void main() {
 //! Each edge of `mesh` once, as index pairs: neighbouring triangles share theirs, and a line
 //! drawn twice with blending would be darker than its neighbours.
 std::vector<GLuint> distinctEdges(const TriangleMesh& mesh) {
-    std::vector<std::uint64_t> keys;
-    keys.reserve(3 * mesh.triangles.size());
-    for (const TriangleMesh::Triangle& triangle : mesh.triangles)
-        for (int corner = 0; corner < 3; ++corner) {
-            const std::uint64_t a = triangle[corner];
-            const std::uint64_t b = triangle[(corner + 1) % 3];
-            keys.push_back(std::min(a, b) << 32 | std::max(a, b));
-        }
-    std::sort(keys.begin(), keys.end());
+    std::vector<std::uint64_t> keys = mesh.sortedEdgeKeys();
     keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
     std::vector<GLuint> indices;
     indices.reserve(2 * keys.size());
