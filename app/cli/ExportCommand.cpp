@@ -8,8 +8,25 @@
 #include "io/SequenceExporter.h"
 
 #include <iostream>
+#include <string>
+#include <vector>
 
 namespace airtrap::cli {
+
+namespace {
+
+std::vector<std::string> formatNames() {
+    std::vector<std::string> names;
+    for (ExportFormat format : kExportFormats)
+        names.emplace_back(exportFormatName(format));
+    return names;
+}
+
+std::vector<std::string> upAxisNames() {
+    return {std::string(upAxisName(UpAxis::Y)), std::string(upAxisName(UpAxis::Z))};
+}
+
+} // namespace
 
 void ExportCommand::addTo(CLI::App& parent) {
     app_ = parent.add_subcommand("export", "Write cached frames as files renderers read");
@@ -19,11 +36,11 @@ void ExportCommand::addTo(CLI::App& parent) {
                      "(surface, density, vel); ply: particles_0001.ply points. obj and vdb "
                      "need `post` first")
         ->required()
-        ->check(CLI::IsMember({"ply", "obj", "vdb"}));
+        ->check(CLI::IsMember(formatNames()));
     app_->add_option("--out,-o", outDir_, "Output folder (created if missing)")->required();
     app_->add_option("--frames", framesText_, "Frames to export: A:B, A:, :B or N (default: all)");
     app_->add_option("--up", up_, "Up axis of the files: y (default) or z")
-        ->check(CLI::IsMember({"y", "z"}));
+        ->check(CLI::IsMember(upAxisNames()));
     app_->add_option("--set", overrides_,
                      "Change a render setting for this export, e.g. bubble_mesh.magnitude=0.2 "
                      "(surface_mesh.*, bubble_mesh.* and subgrid_bubbles.* only)");
@@ -54,7 +71,7 @@ ExitCode ExportCommand::run() {
         FrameRange::selectListed(cache.frames(), framesText_, cache.directory());
     const ExportOptions options{.format = SequenceExporter::parseFormat(format_),
                                 .outDir = outDir_,
-                                .up = up_ == "z" ? UpAxis::Z : UpAxis::Y};
+                                .up = upAxisNamed(up_).value_or(UpAxis::Y)};
     SequenceExporter exporter(cache, scene, options);
     Interrupter interrupter;
     const SignalStopper stopper(interrupter);

@@ -60,14 +60,10 @@ SequenceExporter::SequenceExporter(const FrameCache& cache, const Scene& scene,
       subgrid_(SubgridStore::open(cache.directory())), subgridSphere_(unitIcosphere(1)) {}
 
 ExportFormat SequenceExporter::parseFormat(const std::string& name) {
-    if (name == "ply")
-        return ExportFormat::Ply;
-    if (name == "obj")
-        return ExportFormat::Obj;
-    if (name == "vdb")
-        return ExportFormat::Vdb;
+    if (const std::optional<ExportFormat> format = exportFormatNamed(name))
+        return *format;
     throw Error(ErrorKind::InvalidInput,
-                "export format '" + name + "' is not known; expected obj, vdb or ply");
+                "export format '" + name + "' is not known; expected " + exportFormatList());
 }
 
 bool SequenceExporter::exportsSubgrid() const {

@@ -16,6 +16,7 @@
 // Metres; y up, or z up on request. Every file is written atomically.
 #include "cache/FrameCache.h"
 #include "core/Interrupter.h"
+#include "io/ExportFormat.h"
 #include "io/UpAxis.h"
 #include "post/OscillatingBubbleMesh.h"
 #include "post/PostStore.h"
@@ -27,8 +28,6 @@
 #include <vector>
 
 namespace airtrap {
-
-enum class ExportFormat { Ply, Obj, Vdb };
 
 struct ExportOptions {
     ExportFormat format = ExportFormat::Obj;

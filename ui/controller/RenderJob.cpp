@@ -11,18 +11,6 @@ namespace airtrap {
 
 namespace {
 
-const char* formatName(ExportFormat format) {
-    switch (format) {
-    case ExportFormat::Obj:
-        return "obj";
-    case ExportFormat::Vdb:
-        return "vdb";
-    case ExportFormat::Ply:
-        return "ply";
-    }
-    return "?";
-}
-
 std::vector<int> framesIn(const std::vector<int>& listed, int first, int last) {
     std::vector<int> frames;
     for (const int frame : listed)
@@ -76,7 +64,7 @@ std::string RenderJob::runStages() {
             break;
         SequenceExporter exporter(cache, scene, {format, request_.outDir, request_.up});
         const ExportReport report = exporter.run(frames, interrupter_);
-        summary += "; " + std::string(formatName(format)) + ": " +
+        summary += "; " + std::string(exportFormatName(format)) + ": " +
                    std::to_string(report.files.size()) + " file(s)";
         for (const std::string& problem : report.damaged)
             summary += "; skipped " + problem;
