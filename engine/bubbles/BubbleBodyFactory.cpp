@@ -29,7 +29,8 @@ RigidBody BubbleBodyFactory::build(const BubbleState& bubble) const {
                                                                bubble.body.orientation});
     body.setSurfaceOffset(half);
     // No bounce and no friction against the water: the slip between bubble and water is eq. 6's
-    // drag; other bodies stop a bubble without bouncing it.
+    // drag. Against another body a pair takes the bouncier restitution (ContactMaterial), so a
+    // bubble bounces off a bouncy body and is stopped by any other.
     body.setMaterials(ContactMaterial{0.0, 0.0}, ContactMaterial{0.0, 0.0});
     const MassProperties mass = MassProperties::ofSphere(bubble.radius, density_);
     body.makeDynamic(RigidBodyInertia(mass.mass, mass.inertia), Vec3d::Zero(), {});

@@ -34,7 +34,7 @@ public:
     static BodyShape meshShape(const TriangleMesh& mesh, double spacing);
 
 private:
-    //! Boundary particles half a spacing outside the surface (shape frame), with volumes.
+    //! Boundary particles half a spacing inside the surface (shape frame), with volumes.
     BoundaryParticles sampleBoundary(const RigidBodySettings& body, const TriangleMesh* mesh) const;
     MassProperties massOf(const RigidBodySettings& body, const TriangleMesh* mesh) const;
     KinematicMotion kinematicMotionOf(const RigidBodySettings& body) const;
