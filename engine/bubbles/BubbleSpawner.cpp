@@ -32,24 +32,24 @@ BubbleSpawner::BubbleSpawner(const BubbleSettings& settings, double spacing, std
       upperProbes_(BubbleImmersion::hemisphere(Vec3d::UnitY())),
       minWetProbes_(int(std::ceil(settings.minWaterShare * BubbleImmersion::kProbeCount - 1e-9))) {}
 
-std::size_t BubbleSpawner::spawn(SimulationState& state, const Water& water,
+std::size_t BubbleSpawner::spawn(const Bubbles& bubbles, std::uint64_t step, const Water& water,
                                  const std::vector<const RigidBody*>& solids, int frame,
                                  std::size_t limit) {
     if (limit == 0)
         return 0;
     const NeighborGrid& grid = water.grid;
-    markSolidCells(grid, state, solids);
+    markSolidCells(grid, bubbles.alive, solids);
     const std::vector<AirPocket> pockets = finder_.find(grid, solid_);
     std::vector<FittedBubble> pool = candidates(pockets, water, solids);
     // The step count makes every search's choice its own, and the same on a resumed bake.
-    SplitMix64 random(seed_ ^ (0xA1B2C3D4E5F60718ull * (state.steps + 1)));
+    SplitMix64 random(seed_ ^ (0xA1B2C3D4E5F60718ull * (step + 1)));
     std::size_t made = 0;
     while (!pool.empty() && made < limit) {
         const std::size_t pick = random.below(pool.size());
         const FittedBubble fitted = pool[pick];
         pool.erase(pool.begin() + static_cast<std::ptrdiff_t>(pick));
         BubbleState bubble;
-        bubble.id = state.nextBubbleId++;
+        bubble.id = bubbles.nextId++;
         bubble.birthFrame = frame;
         bubble.radius = fitted.radius;
         bubble.body.position = fitted.centre;
@@ -58,7 +58,7 @@ std::size_t BubbleSpawner::spawn(SimulationState& state, const Water& water,
         bubble.areaFractionInWater =
             fitter_.areaFractionInWater(fitted.centre, fitted.radius, grid, water.positions);
         bubble.pocketVolume = fitted.pocketVolume;
-        state.bubbles.push_back(bubble);
+        bubbles.alive.push_back(bubble);
         ++made;
     }
     return made;
@@ -74,7 +74,8 @@ Vec3d cellCentre(const NeighborGrid& grid, int i, int j, int k) {
 
 } // namespace
 
-void BubbleSpawner::markSolidCells(const NeighborGrid& grid, const SimulationState& state,
+void BubbleSpawner::markSolidCells(const NeighborGrid& grid,
+                                   const std::vector<BubbleState>& bubbles,
                                    const std::vector<const RigidBody*>& solids) {
     // A cell reaches into a solid when the solid comes nearer its centre than its corners are.
     const double halfDiagonal = 0.5 * std::sqrt(3.0) * grid.cellSize();
@@ -95,7 +96,7 @@ void BubbleSpawner::markSolidCells(const NeighborGrid& grid, const SimulationSta
             markAround(grid, body->shapePose().position,
                        body->shape().boundingRadius() + halfDiagonal, solid_,
                        [&](const Vec3d& x) { return body->signedDistance(x) < halfDiagonal; });
-    for (const BubbleState& bubble : state.bubbles) {
+    for (const BubbleState& bubble : bubbles) {
         const double reach = bubble.radius + halfDiagonal;
         markAround(grid, bubble.body.position, reach, solid_, [&](const Vec3d& x) {
             return (x - bubble.body.position).squaredNorm() < reach * reach;

@@ -10,10 +10,11 @@
 #include "bubbles/AirPocketFinder.h"
 #include "bubbles/BubbleFitter.h"
 #include "bubbles/BubbleImmersion.h"
+#include "bubbles/BubbleState.h"
 #include "rigid/RigidBody.h"
 #include "scene/Scene.h"
-#include "sim/SimulationState.h"
 #include "sph/NeighborSweep.h"
+#include "sph/ParticleSet.h"
 
 #include <vector>
 
@@ -31,9 +32,16 @@ public:
         const ParticleSet& particles;
     };
 
-    //! Adds at most `limit` new bubbles to `state`, born in `frame`; `solids` are the rigid
-    //! bodies bubbles may not start in (not the bubbles' own bodies). Returns how many were made.
-    std::size_t spawn(SimulationState& state, const Water& water,
+    //! The living bubbles, oldest first, and the id the next new one takes.
+    struct Bubbles {
+        std::vector<BubbleState>& alive;
+        std::uint32_t& nextId;
+    };
+
+    //! Adds at most `limit` new bubbles to `bubbles`, born in `frame` at the step numbered
+    //! `step` (since t = 0); `solids` are the rigid bodies bubbles may not start in (not the
+    //! bubbles' own bodies). Returns how many were made.
+    std::size_t spawn(const Bubbles& bubbles, std::uint64_t step, const Water& water,
                       const std::vector<const RigidBody*>& solids, int frame, std::size_t limit);
 
 private:
@@ -41,7 +49,7 @@ private:
     //! cells are found once (the grid's layout never changes); moving bodies and bubbles mark
     //! only the cells around them, so a search costs a pass over the cells, not one distance
     //! query per cell and body.
-    void markSolidCells(const NeighborGrid& grid, const SimulationState& state,
+    void markSolidCells(const NeighborGrid& grid, const std::vector<BubbleState>& bubbles,
                         const std::vector<const RigidBody*>& solids);
     //! Marks the cells within `reach` of `centre` for which `inside(cellCentre)` holds.
     template <class Inside>

@@ -2,7 +2,7 @@
 
 #include "rigid/BoundarySampler.h"
 #include "sim/BodyBuilder.h"
-#include "sph/WcsphSolver.h"
+#include "sph/TaitEquationOfState.h"
 
 #include <cmath>
 #include <limits>
@@ -88,8 +88,9 @@ std::vector<RigidBodyState> SceneSetup::initialBodyStates(const Scene& scene,
     return states;
 }
 
-void SceneSetup::fillFluid(const Scene& scene, const WcsphSolver& solver, SimulationState& state) {
-    const std::vector<RigidBody>& bodies = solver.bodies();
+void SceneSetup::fillFluid(const Scene& scene, const std::vector<RigidBody>& bodies,
+                           SimulationState& state) {
+    const TaitEquationOfState equationOfState(scene.solver);
     const auto insideABody = [&](const Vec3d& x, double margin) {
         for (std::size_t b = sceneryCount(scene); b < bodies.size(); ++b)
             if (bodies[b].signedDistance(x) < margin)
@@ -114,8 +115,8 @@ void SceneSetup::fillFluid(const Scene& scene, const WcsphSolver& solver, Simula
                         insideAnyObstacle(scene, x, 0.5 * dx) || insideABody(x, 0.25 * dx))
                         continue;
                     const double depth = std::max(0.0, b.max.y() - x.y());
-                    const float density =
-                        solver.densityForPressure(scene.solver.restDensity * gravity * depth);
+                    const float density = equationOfState.densityForPressure(
+                        scene.solver.restDensity * gravity * depth);
                     fluid.push(x.cast<float>(), velocity, density, state.nextParticleId++);
                 }
     }

@@ -9,8 +9,6 @@
 
 namespace airtrap {
 
-class WcsphSolver;
-
 class SceneSetup {
 public:
     //! The static container (open top) first, then the box obstacles, then the scene's bodies
@@ -27,10 +25,11 @@ public:
                                                          const std::vector<RigidBody>& bodies);
 
     //! Fills every fluid block on the particle lattice, skipping points outside the container,
-    //! inside obstacles or bodies (or closer than half a spacing to them) or already filled by an
-    //! earlier block. Densities start hydrostatic
-    //! (inverse Tait at the depth below the block's top), so a resting pool starts at rest.
-    static void fillFluid(const Scene& scene, const WcsphSolver& solver, SimulationState& state);
+    //! inside obstacles or `bodies` (buildBodies' list; or closer than half a spacing to them) or
+    //! already filled by an earlier block. Densities start hydrostatic (inverse Tait at the
+    //! depth below the block's top), so a resting pool starts at rest.
+    static void fillFluid(const Scene& scene, const std::vector<RigidBody>& bodies,
+                          SimulationState& state);
 };
 
 } // namespace airtrap

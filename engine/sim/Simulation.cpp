@@ -73,9 +73,10 @@ std::string percent(double fraction) {
 
 Simulation::Simulation(Scene scene, SimulationState resumeFrom)
     : scene_(std::move(scene)), state_(std::move(resumeFrom)),
-      solver_(std::make_unique<WcsphSolver>(scene_.solver, scene_.domain(),
-                                            SceneSetup::buildBodies(scene_),
-                                            SceneSetup::sceneryCount(scene_), scene_.bubbles)) {
+      water_(std::make_unique<WcsphSolver>(scene_.solver, scene_.domain())),
+      bodies_(SceneSetup::buildBodies(scene_), SceneSetup::sceneryCount(scene_), scene_.solver,
+              scene_.bubbles, water_->kernel()) {
+    water_->placeBoundary(bodies_.bodies());
     for (const InflowEmitterSettings& settings : scene_.emitters)
         emitters_.emplace_back(settings, scene_.solver.particleSpacing, scene_.solver.restDensity);
     if (scene_.bubbles.enabled) {
@@ -86,8 +87,8 @@ Simulation::Simulation(Scene scene, SimulationState resumeFrom)
 }
 
 Simulation::Simulation(Scene scene) : Simulation(std::move(scene), SimulationState{}) {
-    state_.bodies = SceneSetup::initialBodyStates(scene_, solver_->bodies());
-    SceneSetup::fillFluid(scene_, *solver_, state_);
+    state_.bodies = SceneSetup::initialBodyStates(scene_, bodies_.bodies());
+    SceneSetup::fillFluid(scene_, bodies_.bodies(), state_);
     lastFrameStats_ = measure(state_.fluid);
 }
 
@@ -100,7 +101,7 @@ Simulation::Advance Simulation::advanceFrame(Interrupter& interrupter, const Ste
     const std::size_t particlesAtStart = state_.fluid.size();
     std::size_t lost = 0;
     std::uint64_t steps = 0;
-    solver_->phases().reset();
+    phases_.reset();
     frameBubbles_ = {};
     const auto wallStart = std::chrono::steady_clock::now();
 
@@ -127,7 +128,7 @@ Simulation::Advance Simulation::advanceFrame(Interrupter& interrupter, const Ste
         std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
     for (int phase = 0; phase < StepPhases::Count; ++phase)
         lastFrameStats_.phaseSeconds[std::string(StepPhases::kNames[phase])] =
-            solver_->phases().seconds(static_cast<StepPhases::Phase>(phase));
+            phases_.seconds(static_cast<StepPhases::Phase>(phase));
     return Advance::FrameDone;
 }
 
@@ -143,8 +144,7 @@ StepReport Simulation::step(double maxTimeStep) {
 }
 
 StepReport Simulation::takeStep(double timeToFrameEnd, double frameEnd) {
-    WcsphSolver& water = *solver_;
-    StepPhases& phases = water.phases();
+    PressureSolver& water = *water_;
     ParticleSet& fluid = state_.fluid;
     StepReport report;
 
@@ -152,12 +152,15 @@ StepReport Simulation::takeStep(double timeToFrameEnd, double frameEnd) {
     //    sorted onto it; beside it, the bodies and the bubbles placed with their boundary
     //    particles. Then the water near moving bodies, and Δt (CFL, docs/METHOD.md).
     const auto sortWater =
-        timed(phases, StepPhases::Neighbours, [&] { water.sortByCell(fluid, report); });
-    if (water.bodiesToPlace(state_))
-        runBeside(sortWater, timed(phases, StepPhases::Bodies, [&] { water.placeBodies(state_); }));
+        timed(phases_, StepPhases::Neighbours, [&] { water.sortByCell(fluid, report); });
+    if (bodies_.needPlacing(state_))
+        runBeside(sortWater, timed(phases_, StepPhases::Bodies, [&] {
+                      bodies_.place(state_);
+                      water.placeBoundary(bodies_.bodies());
+                  }));
     else
         sortWater();
-    inPhase(phases, StepPhases::Bodies, [&] { water.pairMovingBoundary(); });
+    inPhase(phases_, StepPhases::Bodies, [&] { water.pairMovingBoundary(); });
     report.timeStep =
         water.chooseTimeStep(report.maxSpeed, state_.lastMaxAcceleration, timeToFrameEnd);
 
@@ -165,13 +168,15 @@ StepReport Simulation::takeStep(double timeToFrameEnd, double frameEnd) {
     //    momentum equation (eq. 1) with the boundary force's contact impulses (eq. 4); beside the
     //    forces, which only read the water too, the water around the bubbles measured for their
     //    forces and deletion rules.
-    inPhase(phases, StepPhases::Density,
+    inPhase(phases_, StepPhases::Density,
             [&] { water.computeDensities(fluid, state_.steps, report.timeStep, report); });
-    const auto forces = timed(phases, StepPhases::Forces,
+    const auto forces = timed(phases_, StepPhases::Forces,
                               [&] { water.computeForces(fluid, report.timeStep, report); });
-    if (water.bubbleSurroundingsDue(state_))
-        runBeside(forces, timed(phases, StepPhases::BubbleForces,
-                                [&] { water.measureBubbleSurroundings(state_); }));
+    if (bodies_.bubbleSurroundingsDue(state_))
+        runBeside(forces, timed(phases_, StepPhases::BubbleForces, [&] {
+                      bodies_.measureBubbleSurroundings(state_, water.grid(),
+                                                        water.sortedPositions());
+                  }));
     else
         forces();
 
@@ -185,14 +190,14 @@ StepReport Simulation::takeStep(double timeToFrameEnd, double frameEnd) {
     const double stepStart = state_.time;
     // The last step of a frame lands on the frame time exactly, not on an accumulated sum.
     state_.time = report.timeStep == frameEnd - stepStart ? frameEnd : stepStart + report.timeStep;
-    water.followPaths(state_);
+    bodies_.followPaths(state_);
     // After the move, so that the cached frame holds the particles due by its time and a
     // resumed bake starts from the same set.
     emitInflow(stepStart, state_.time);
 
     // 4. Bubble deletion (age, time floating, overlap, impact, surfaced: docs/METHOD.md).
     if (bubbleDeletion_ && !state_.bubbles.empty())
-        inPhase(phases, StepPhases::BubbleDeletion, [&] { deleteBubbles(report.timeStep); });
+        inPhase(phases_, StepPhases::BubbleDeletion, [&] { deleteBubbles(report.timeStep); });
 
     // 5. Air pockets on this step's grid become bubbles, every bubbles.pocket_interval steps.
     //    Table 1 reads them off the grid before the interactions; here they are read off the
@@ -204,21 +209,23 @@ StepReport Simulation::takeStep(double timeToFrameEnd, double frameEnd) {
 }
 
 bool Simulation::moveBodiesAndWater(double dt) {
-    WcsphSolver& water = *solver_;
-    StepPhases& phases = water.phases();
-    if (!water.hasDynamicBodies()) {
+    PressureSolver& water = *water_;
+    if (!water.boundary().hasDynamicBodies()) {
         bool finite = true;
-        inPhase(phases, StepPhases::Integrate,
+        inPhase(phases_, StepPhases::Integrate,
                 [&] { finite = !water.integrate(state_.fluid, dt); });
         return finite;
     }
-    inPhase(phases, StepPhases::Bodies, [&] { water.computeBodyReactions(state_.fluid, dt); });
+    inPhase(phases_, StepPhases::Bodies, [&] { water.computeBodyReactions(state_.fluid, dt); });
     bool bodiesFinite = true;
     bool waterFinite = true;
     // The bodies move on their reactions alone and the water on its accelerations alone.
-    runBeside(timed(phases, StepPhases::Bodies,
-                    [&] { bodiesFinite = water.moveDynamicBodies(state_, dt); }),
-              timed(phases, StepPhases::Integrate,
+    runBeside(timed(phases_, StepPhases::Bodies,
+                    [&] {
+                        bodiesFinite =
+                            bodies_.move(state_, water.boundary(), water.bodyReactions(), dt);
+                    }),
+              timed(phases_, StepPhases::Integrate,
                     [&] { waterFinite = !water.integrate(state_.fluid, dt); }));
     return bodiesFinite && waterFinite;
 }
@@ -234,13 +241,11 @@ void Simulation::createBubbles(int frame) {
     const std::uint64_t limit = static_cast<std::uint64_t>(scene_.bubbles.maxNewPerFrame);
     if (frameBubbles_.created >= limit)
         return;
-    StepPhases::Scope scope(solver_->phases(), StepPhases::BubblePockets);
-    std::vector<const RigidBody*> solids;
-    for (std::size_t k = 0; k < solver_->firstBubbleBody(); ++k)
-        solids.push_back(&solver_->bodies()[k]);
-    const BubbleSpawner::Water water{solver_->grid(), solver_->sortedPositions(), state_.fluid};
-    frameBubbles_.created +=
-        bubbleSpawner_->spawn(state_, water, solids, frame, limit - frameBubbles_.created);
+    StepPhases::Scope scope(phases_, StepPhases::BubblePockets);
+    const BubbleSpawner::Water water{water_->grid(), water_->sortedPositions(), state_.fluid};
+    const BubbleSpawner::Bubbles bubbles{state_.bubbles, state_.nextBubbleId};
+    frameBubbles_.created += bubbleSpawner_->spawn(bubbles, state_.steps, water, bodies_.solids(),
+                                                   frame, limit - frameBubbles_.created);
 }
 
 void Simulation::emitInflow(double from, double to) {

@@ -8,7 +8,10 @@
 #include "scene/Scene.h"
 #include "sim/FrameStats.h"
 #include "sim/InflowEmitter.h"
+#include "sim/RigidWorld.h"
 #include "sim/SimulationState.h"
+#include "sim/StepPhases.h"
+#include "sph/PressureSolver.h"
 
 #include <functional>
 #include <memory>
@@ -16,9 +19,6 @@
 #include <vector>
 
 namespace airtrap {
-
-class WcsphSolver;
-struct StepReport;
 
 class Simulation {
 public:
@@ -50,8 +50,12 @@ public:
     //! Statistics of the last completed frame (or of the initial state).
     const FrameStats& lastFrameStats() const { return lastFrameStats_; }
 
-    //! The solver, for benchmarks and tests that step it directly.
-    WcsphSolver& solver() { return *solver_; }
+    //! The water's pressure solver, for benchmarks and tests that look into it.
+    const PressureSolver& solver() const { return *water_; }
+    //! The rigid bodies, bubbles' included, as the last step placed and moved them.
+    const RigidWorld& bodies() const { return bodies_; }
+    //! Wall-clock seconds per phase of the steps taken since the frame began (or since reset).
+    StepPhases& phases() { return phases_; }
 
 private:
     //! Throws Error(SimulationBlowUp) naming the frame and the likely cause.
@@ -76,7 +80,9 @@ private:
     Scene scene_;
     SimulationState state_;
     FrameStats lastFrameStats_;
-    std::unique_ptr<WcsphSolver> solver_;
+    StepPhases phases_;
+    std::unique_ptr<PressureSolver> water_;
+    RigidWorld bodies_;
     std::vector<InflowEmitter> emitters_;
     std::optional<BubbleDeletion> bubbleDeletion_;
     std::optional<BubbleSpawner> bubbleSpawner_;

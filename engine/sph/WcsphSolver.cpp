@@ -13,7 +13,6 @@ namespace airtrap {
 
 namespace {
 
-constexpr double kTaitGamma = 7.0;
 constexpr std::size_t kParticleGrain = 1024;
 
 using Range = tbb::blocked_range<std::size_t>;
@@ -33,32 +32,20 @@ double parallelMax(std::size_t n, F&& f) {
 
 } // namespace
 
-WcsphSolver::WcsphSolver(const SolverSettings& settings, const Aabb& domain,
-                         std::vector<RigidBody> bodies, std::size_t sceneryCount,
-                         const BubbleSettings& bubbles)
+WcsphSolver::WcsphSolver(const SolverSettings& settings, const Aabb& domain)
     : settings_(settings),
       kernel_(static_cast<float>(settings.supportFactor * settings.particleSpacing)),
       spacing_(static_cast<float>(settings.particleSpacing)),
       mass_(static_cast<float>(settings.restDensity * std::pow(settings.particleSpacing, 3))),
-      speedOfSound_(10.0 * settings.maxSpeed),
-      tait_(settings.restDensity * speedOfSound_ * speedOfSound_ / kTaitGamma),
+      equationOfState_(settings),
       // The grid reaches one support radius beyond the domain so that the boundary layer, which
       // sits half a spacing outside the container's walls, is inside it.
-      gridDomain_(domain.expanded(kernel_.supportRadius())), bodies_(std::move(bodies)),
-      sceneryCount_(std::min(sceneryCount, bodies_.size())), firstBubble_(bodies_.size()),
+      gridDomain_(domain.expanded(kernel_.supportRadius())),
       boundary_(gridDomain_, kernel_.supportRadius(), static_cast<float>(settings.restDensity)),
-      coupling_(settings.gravity, settings.particleSpacing),
-      grid_(gridDomain_, kernel_.supportRadius()), passes_(kernel_, interactionConstants()) {
-    for (const RigidBody& body : bodies_)
-        anyBodyMoves_ = anyBodyMoves_ || body.isMoving();
-    boundary_.rebuild(bodies_);
-    if (bubbles.enabled)
-        bubbles_.emplace(bubbles, settings_, kernel_);
-    coupling_.setBubblesFrom(firstBubble_);
-}
+      grid_(gridDomain_, kernel_.supportRadius()), passes_(kernel_, interactionConstants()) {}
 
 InteractionConstants WcsphSolver::interactionConstants() const {
-    const float c = static_cast<float>(speedOfSound_);
+    const float c = static_cast<float>(equationOfState_.speedOfSound());
     const float h = kernel_.smoothingLength();
     InteractionConstants constants;
     constants.mass = mass_;
@@ -68,23 +55,6 @@ InteractionConstants WcsphSolver::interactionConstants() const {
     constants.contactRadius = 0.5f * spacing_;
     constants.gravity = settings_.gravity.cast<float>();
     return constants;
-}
-
-float WcsphSolver::pressure(float density) const {
-    const double ratio = density / settings_.restDensity;
-    const double r2 = ratio * ratio;
-    const double r7 = r2 * r2 * r2 * ratio;
-    return static_cast<float>(std::max(0.0, tait_ * (r7 - 1.0)));
-}
-
-float WcsphSolver::densityForPressure(double pressure) const {
-    return static_cast<float>(settings_.restDensity *
-                              std::pow(1.0 + pressure / tait_, 1.0 / kTaitGamma));
-}
-
-bool WcsphSolver::bodiesToPlace(const SimulationState& state) const {
-    // Bodies of bubbles deleted since the last step must leave too.
-    return anyBodyMoves_ || !state.bubbles.empty() || bodies_.size() != firstBubble_;
 }
 
 void WcsphSolver::pairMovingBoundary() {
@@ -116,78 +86,12 @@ void WcsphSolver::computeForces(const ParticleSet& fluid, double dt, StepReport&
                               recordContacts ? &contacts_ : nullptr);
 }
 
-bool WcsphSolver::bubbleSurroundingsDue(const SimulationState& state) const {
-    return bubbles_ && BubbleDynamics::measureDue(state.steps, state.bubbles);
-}
-
-void WcsphSolver::measureBubbleSurroundings(SimulationState& state) {
-    bubbles_->measureSurroundings(state.steps, bodies_, firstBubble_, state.bubbles, state.fluid,
-                                  sortedPositions_, grid_);
-}
-
 void WcsphSolver::computeBodyReactions(const ParticleSet& fluid, double dt) {
     passes_.bodyReactions(inputs(fluid), pressureOverDensity2_, contacts_, dt, reactions_);
 }
 
-void WcsphSolver::followPaths(SimulationState& state) {
-    for (std::size_t k = 0; k < state.bodies.size(); ++k) {
-        RigidBody& body = bodies_.at(sceneryCount_ + k);
-        if (body.motion() != RigidBody::Motion::Kinematic)
-            continue;
-        body.followPath(state.time);
-        state.bodies[k] = body.state();
-    }
-}
-
-void WcsphSolver::placeBodies(SimulationState& state) {
-    const std::size_t sceneBodies = firstBubble_ - sceneryCount_;
-    if (state.bodies.size() != sceneBodies)
-        throw Error(ErrorKind::CacheCorrupt,
-                    "the state holds " + std::to_string(state.bodies.size()) +
-                        " rigid bodies but the scene has " + std::to_string(sceneBodies) +
-                        "; the frame was baked from another scene");
-    if (!state.bubbles.empty() && !bubbles_)
-        throw Error(ErrorKind::CacheCorrupt,
-                    "the state holds bubbles but the scene has bubbles.enabled = false");
-    for (std::size_t k = 0; k < state.bodies.size(); ++k)
-        bodies_[sceneryCount_ + k].setState(state.bodies[k]);
-    if (bubbles_)
-        bubbles_->syncBodies(bodies_, firstBubble_, state.bubbles);
-    followPaths(state);
-    boundary_.rebuild(bodies_);
-}
-
-bool WcsphSolver::moveDynamicBodies(SimulationState& state, double dt) {
-    if (!bubbles_ || state.bubbles.empty()) {
-        coupling_.advance(bodies_, boundary_, reactions_, dt);
-        return storeMovedBodies(state);
-    }
-    coupling_.advance(bodies_, boundary_, reactions_, dt,
-                      [&](std::vector<RigidBody>& bodies, double step) {
-                          bubbles_->applyForces(bodies, firstBubble_, state.bubbles, step);
-                          bubbles_->applyPairImpulses(bodies, firstBubble_);
-                      });
-    return storeMovedBodies(state);
-}
-
-bool WcsphSolver::storeMovedBodies(SimulationState& state) const {
-    const auto finite = [](const RigidBodyState& moved) {
-        return moved.position.allFinite() && moved.orientation.coeffs().allFinite() &&
-               moved.linearVelocity.allFinite() && moved.angularVelocity.allFinite();
-    };
-    bool allFinite = true;
-    for (std::size_t k = 0; k < state.bodies.size(); ++k) {
-        const RigidBody& body = bodies_[sceneryCount_ + k];
-        if (!body.isDynamic())
-            continue;
-        state.bodies[k] = body.state();
-        allFinite = allFinite && finite(state.bodies[k]);
-    }
-    for (std::size_t k = 0; k < state.bubbles.size(); ++k) {
-        state.bubbles[k].body = bodies_[firstBubble_ + k].state();
-        allFinite = allFinite && finite(state.bubbles[k].body);
-    }
-    return allFinite;
+void WcsphSolver::placeBoundary(const std::vector<RigidBody>& bodies) {
+    boundary_.rebuild(bodies);
 }
 
 void WcsphSolver::sortByCell(ParticleSet& fluid, StepReport& report) {
@@ -225,7 +129,7 @@ double WcsphSolver::advanceDensities(ParticleSet& fluid, double dt) {
         // converges again (the clamp SPlisHSPlasH applies before its equation of state).
         const float rho = std::max(restDensity, fluid.densities[i] + step * densityRates_[i]);
         fluid.densities[i] = rho;
-        pressureOverDensity2_[i] = pressure(rho) / (rho * rho);
+        pressureOverDensity2_[i] = equationOfState_.pressure(rho) / (rho * rho);
         return std::abs(rho * invRest - 1.0);
     });
 }
@@ -233,7 +137,7 @@ double WcsphSolver::advanceDensities(ParticleSet& fluid, double dt) {
 double WcsphSolver::chooseTimeStep(double maxSpeed, double lastMaxAcceleration,
                                    double timeToFrameEnd) const {
     const double h = kernel_.smoothingLength();
-    double dt = settings_.cflFactor * h / (speedOfSound_ + maxSpeed);
+    double dt = settings_.cflFactor * h / (equationOfState_.speedOfSound() + maxSpeed);
     if (lastMaxAcceleration > 0.0)
         dt = std::min(dt, 0.25 * std::sqrt(h / lastMaxAcceleration));
     if (dt >= timeToFrameEnd)

@@ -3,7 +3,6 @@
 #include "ProcessMemory.h"
 #include "core/ThreadLimit.h"
 #include "sim/Simulation.h"
-#include "sph/WcsphSolver.h"
 
 #include <chrono>
 #include <cmath>
@@ -14,7 +13,7 @@ namespace {
 
 //! Mean number of water neighbours within the support radius (excluding the particle itself),
 //! counted over a sample of particles.
-double meanNeighbors(const WcsphSolver& solver, const ParticleSet& fluid) {
+double meanNeighbors(const PressureSolver& solver, const ParticleSet& fluid) {
     const float radius2 = solver.kernel().supportRadius() * solver.kernel().supportRadius();
     const std::size_t stride = std::max<std::size_t>(1, fluid.size() / 2000);
     std::size_t pairs = 0, sampled = 0;
@@ -36,11 +35,11 @@ BenchmarkResult BenchmarkCase::run(int threads, int steps, int warmupSteps) cons
     const std::size_t baseline = ProcessMemory::residentBytes();
 
     Simulation simulation = start_ ? Simulation(scene_, *start_) : Simulation(scene_);
-    WcsphSolver& solver = simulation.solver();
+    const PressureSolver& solver = simulation.solver();
     const double noFrameLimit = 1.0e9;
     for (int s = 0; s < warmupSteps; ++s)
         simulation.step(noFrameLimit);
-    solver.phases().reset();
+    simulation.phases().reset();
 
     const auto start = std::chrono::steady_clock::now();
     for (int s = 0; s < steps; ++s)
@@ -63,7 +62,7 @@ BenchmarkResult BenchmarkCase::run(int threads, int steps, int warmupSteps) cons
     result.engineBytesPerParticle = double(solver.allocatedBytes() + fluid.allocatedBytes()) / n;
     for (int phase = 0; phase < StepPhases::Count; ++phase)
         result.phaseMilliseconds[std::string(StepPhases::kNames[phase])] =
-            1000.0 * solver.phases().seconds(static_cast<StepPhases::Phase>(phase)) / steps;
+            1000.0 * simulation.phases().seconds(static_cast<StepPhases::Phase>(phase)) / steps;
     return result;
 }
 

@@ -3,7 +3,7 @@
 #include "core/Interrupter.h"
 #include "core/ThreadLimit.h"
 #include "sim/Simulation.h"
-#include "sph/WcsphSolver.h"
+#include "sim/StepPhases.h"
 
 #include <algorithm>
 #include <chrono>
@@ -38,7 +38,7 @@ BubbleBakeResult BubbleBakeComparison::run(int threads, double snapshotTime) con
         result.secondsOff += secondsToAdvance(off, never);
         result.secondsOn += secondsToAdvance(on, never);
         // The simulation restarts its phase clocks every frame.
-        result.bubblePhaseSeconds += bubblePhaseSeconds(on.solver().phases());
+        result.bubblePhaseSeconds += bubblePhaseSeconds(on.phases());
         result.mostBubblesAlive = std::max(result.mostBubblesAlive, on.state().bubbles.size());
         if (!result.snapshot && on.state().time >= snapshotTime)
             result.snapshot = on.state();

@@ -2,7 +2,7 @@
 
 #include "core/ThreadLimit.h"
 #include "sim/Simulation.h"
-#include "sph/WcsphSolver.h"
+#include "sim/StepPhases.h"
 
 #include <chrono>
 #include <limits>
@@ -23,8 +23,7 @@ std::map<std::string, double> phaseMilliseconds(Simulation& simulation, int step
     std::map<std::string, double> phases;
     for (int phase = 0; phase < StepPhases::Count; ++phase)
         phases[std::string(StepPhases::kNames[phase])] =
-            1000.0 * simulation.solver().phases().seconds(static_cast<StepPhases::Phase>(phase)) /
-            steps;
+            1000.0 * simulation.phases().seconds(static_cast<StepPhases::Phase>(phase)) / steps;
     return phases;
 }
 
@@ -42,8 +41,8 @@ BubbleStepResult BubbleStepComparison::run(int threads, int steps, int warmupSte
         on.step(kNoFrameEnd);
         off.step(kNoFrameEnd);
     }
-    on.solver().phases().reset();
-    off.solver().phases().reset();
+    on.phases().reset();
+    off.phases().reset();
     double secondsOn = 0.0;
     double secondsOff = 0.0;
     for (int step = 0; step < steps; ++step) {

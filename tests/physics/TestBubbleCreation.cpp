@@ -7,7 +7,6 @@
 // every few steps (bubbles.pocket_interval) and find it at its size.
 #include "BubbleTestSupport.h"
 #include "core/Interrupter.h"
-#include "sph/WcsphSolver.h"
 #include "support/TestMain.h"
 
 #include <QtTest>

@@ -12,7 +12,6 @@
 // time so long that only the water's pressure lifts it.
 #include "BubbleTestSupport.h"
 #include "core/Interrupter.h"
-#include "sph/WcsphSolver.h"
 #include "support/TestMain.h"
 
 #include <QtTest>

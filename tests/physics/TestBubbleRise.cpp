@@ -2,7 +2,6 @@
 // "Bubble rise"): after it has settled, its mean vertical speed lies within 15 % of min(2/9 g R²/ν,
 // cap).
 #include "BubbleTestSupport.h"
-#include "sph/WcsphSolver.h"
 #include "support/TestMain.h"
 
 #include <QtTest>

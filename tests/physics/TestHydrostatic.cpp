@@ -1,7 +1,7 @@
 // A resting tank: after settling, the pressure at depth d equals ρ₀ g d within 5 %, no particle
 // leaves, the particle count stays constant and the water is at rest.
 #include "sim/Simulation.h"
-#include "sph/WcsphSolver.h"
+#include "sph/TaitEquationOfState.h"
 #include "support/TestMain.h"
 
 #include <QtTest>
@@ -14,7 +14,7 @@ using namespace airtrap;
 namespace {
 
 constexpr double kTankSpacing = 0.02; // m
-constexpr double kDepth = 0.4;    // m of water
+constexpr double kDepth = 0.4;        // m of water
 constexpr double kSettleSeconds = 1.0;
 
 Scene tank() {
@@ -63,19 +63,21 @@ private Q_SLOTS:
 
         float surface = 0.0f;
         for (const Vec3f& x : fluid.positions) {
-            QVERIFY(x.y() > -0.5 * kTankSpacing && x.x() > -0.5 * kTankSpacing && x.z() > -0.5 * kTankSpacing);
+            QVERIFY(x.y() > -0.5 * kTankSpacing && x.x() > -0.5 * kTankSpacing &&
+                    x.z() > -0.5 * kTankSpacing);
             surface = std::max(surface, x.y());
         }
         surface += 0.5f * float(kTankSpacing);
 
         // Mean pressure per layer, away from the side walls, from the equation of state.
+        const TaitEquationOfState equationOfState(simulation.scene().solver);
         std::map<int, std::pair<double, int>> layers;
         for (std::size_t i = 0; i < fluid.size(); ++i) {
             const Vec3f& x = fluid.positions[i];
             if (x.x() < 0.1f || x.x() > 0.3f || x.z() < 0.1f || x.z() > 0.3f)
                 continue;
             const int layer = int(std::floor((surface - x.y()) / kTankSpacing));
-            layers[layer].first += simulation.solver().pressure(fluid.densities[i]);
+            layers[layer].first += equationOfState.pressure(fluid.densities[i]);
             layers[layer].second += 1;
         }
         const double rhoG = 1000.0 * 9.81;

@@ -3,7 +3,6 @@
 // gravity off, far from the container's walls, so nothing else exchanges momentum with either: over
 // the impact the sphere's momentum loss and the water's gain agree within a few per cent.
 #include "sim/Simulation.h"
-#include "sph/WcsphSolver.h"
 #include "support/TestMain.h"
 
 #include <QtTest>
@@ -46,7 +45,7 @@ private Q_SLOTS:
 
         Simulation simulation(scene);
         const double particleMass = simulation.solver().particleMass();
-        const double sphereMass = simulation.solver().bodies().back().inertia().mass();
+        const double sphereMass = simulation.bodies().bodies().back().inertia().mass();
         const Vec3d water0 = waterMomentum(simulation.state().fluid, particleMass);
         const Vec3d sphere0 = sphereMass * simulation.state().bodies[0].linearVelocity;
         QVERIFY(water0.norm() < 1e-9);

@@ -13,7 +13,6 @@
 #include "post/BubbleCensus.h"
 #include "scene/SceneJson.h"
 #include "sim/Simulation.h"
-#include "sph/WcsphSolver.h"
 #include "support/TestMain.h"
 
 #include <QtTest>
@@ -112,12 +111,12 @@ private Q_SLOTS:
         Simulation simulation(scene);
         Interrupter never;
         // The bunny is the scene's only body, the last before the bubbles' bodies.
-        const std::size_t bunnyIndex = simulation.solver().firstBubbleBody() - 1;
+        const std::size_t bunnyIndex = simulation.bodies().firstBubbleBody() - 1;
         std::set<std::uint32_t> checked;
         double farthest = 0.0; // from the bunny, in its bounding radii, where a bubble was made
         while (simulation.frame() < scene.frames.endFrame) {
             simulation.advanceFrame(never);
-            const RigidBody& bunny = simulation.solver().bodies()[bunnyIndex];
+            const RigidBody& bunny = simulation.bodies().bodies()[bunnyIndex];
             for (const BubbleState& bubble : simulation.state().bubbles) {
                 if (!checked.insert(bubble.id).second)
                     continue; // judged where it was created
