@@ -5,10 +5,10 @@
 #include "SceneLoader.h"
 #include "ShellQuote.h"
 #include "SignalStopper.h"
+#include "bake/Baker.h"
 #include "cache/FrameCache.h"
 #include "core/Error.h"
 #include "core/ThreadLimit.h"
-#include "sim/Baker.h"
 
 #include <chrono>
 #include <cstdio>

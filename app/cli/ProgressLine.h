@@ -2,7 +2,7 @@
 // The bake's progress line: frame, sim time, steps/s, particles, bubbles (when the scene simulates
 // them), ETA. On a terminal one line is rewritten in place after every step (at most 10 times a
 // second); into a pipe or a log file it is one line per finished frame, so logs stay readable.
-#include "sim/Baker.h"
+#include "bake/Baker.h"
 #include "sim/FrameStats.h"
 
 #include <chrono>

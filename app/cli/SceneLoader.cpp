@@ -3,7 +3,7 @@
 #include "scene/InflowNozzle.h"
 #include "scene/SceneJson.h"
 #include "scene/SceneOverride.h"
-#include "scene/SceneValidator.h"
+#include "sim/SceneCheck.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,8 +1,8 @@
 #include "bubbles/BubbleBodyFactory.h"
 
-#include "rigid/BoundarySampler.h"
 #include "rigid/MassProperties.h"
 #include "rigid/ShapeSampler.h"
+#include "sph/BoundaryVolumes.h"
 
 #include <algorithm>
 #include <string>
@@ -21,12 +21,12 @@ double BubbleBodyFactory::massOf(double radius) const {
 RigidBody BubbleBodyFactory::build(const BubbleState& bubble) const {
     const double half = 0.5 * spacing_;
     // A bubble is at least a spacing in radius, so its layer keeps a sphere of half a spacing.
-    BoundaryParticles layer = ShapeSampler::sampleSphere(std::max(bubble.radius - half, half),
-                                                         spacing_);
-    BoundarySampler::computeVolumes(layer, kernel_, spacing_);
+    BoundaryParticles layer =
+        ShapeSampler::sampleSphere(std::max(bubble.radius - half, half), spacing_);
+    BoundaryVolumes::compute(layer, kernel_, spacing_);
     RigidBody body("bubble " + std::to_string(bubble.id), std::move(layer),
-                   BodyShape::sphere(bubble.radius), RigidPose{bubble.body.position,
-                                                               bubble.body.orientation});
+                   BodyShape::sphere(bubble.radius),
+                   RigidPose{bubble.body.position, bubble.body.orientation});
     body.setSurfaceOffset(half);
     // No bounce and no friction against the water: the slip between bubble and water is eq. 6's
     // drag. Against another body a pair takes the bouncier restitution (ContactMaterial), so a

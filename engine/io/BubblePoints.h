@@ -4,7 +4,7 @@
 // with float x y z (m), float pscale (radius, m: Houdini's and Blender's instancing scale), float
 // vx vy vz (m/s; the velocity v, one property per component as PLY has no vectors), float age (s)
 // and uint id (stable for a bubble's life).
-#include "io/UpAxis.h"
+#include "core/UpAxis.h"
 
 #include <cstdint>
 #include <string>

@@ -3,7 +3,7 @@
 // `bodies_0001.obj`; docs/CLI.md "export"): one `o` object per named mesh, `v` positions in metres,
 // `vn` area-weighted vertex normals, triangles as `f v//vn`. Text, because every renderer reads it
 // and an artist can open it; one object per bubble or body, so they can be picked apart.
-#include "io/UpAxis.h"
+#include "core/UpAxis.h"
 #include "post/NamedMesh.h"
 
 #include <string>

@@ -2,7 +2,7 @@
 // Water particles as a PLY point cloud (one file per frame, `particles_0001.ply`), for Houdini,
 // Blender and any tool that reads PLY. Binary little-endian PLY 1.0, one `vertex` element with
 // float x y z (m), float vx vy vz (m/s), float density (kg/m³) and uint id (stable across frames).
-#include "io/UpAxis.h"
+#include "core/UpAxis.h"
 #include "sph/ParticleSet.h"
 
 #include <cstdint>

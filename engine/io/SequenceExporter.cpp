@@ -5,10 +5,10 @@
 #include "io/BubblePoints.h"
 #include "io/ObjExporter.h"
 #include "io/PlyExporter.h"
-#include "io/SequenceName.h"
-#include "io/VdbExporter.h"
 #include "post/FrameSolids.h"
 #include "post/Icosphere.h"
+#include "post/SequenceName.h"
+#include "post/WaterVolumeFile.h"
 
 #include <chrono>
 #include <cstdio>
@@ -175,7 +175,7 @@ bool SequenceExporter::exportFrame(int frame, ExportReport& report) {
         break;
     case ExportFormat::Vdb: {
         const std::string name = sequenceFileName("fluid", frame, "vdb");
-        VdbExporter::write(
+        WaterVolumeFile::write(
             path(name), store_.readVolume(frame), options_.up,
             {{"frame", std::to_string(frame)}, {"creator", "Airtrap " AIRTRAP_VERSION}});
         report.files.push_back(name);

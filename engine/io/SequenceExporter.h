@@ -12,12 +12,12 @@
 //                                           when the scene simulates bubbles
 //        subgrid_0001.obj                   the sub-grid bubbles as small spheres, one object
 //        bodies_0001.obj                    obstacles and rigid bodies, when the scene has any
-//   vdb  fluid_0001.vdb                     surface, density and vel (VdbExporter)
+//   vdb  fluid_0001.vdb                     surface, density and vel (WaterVolumeFile)
 // Metres; y up, or z up on request. Every file is written atomically.
 #include "cache/FrameCache.h"
 #include "core/Interrupter.h"
+#include "core/UpAxis.h"
 #include "io/ExportFormat.h"
-#include "io/UpAxis.h"
 #include "post/OscillatingBubbleMesh.h"
 #include "post/PostStore.h"
 #include "post/SceneSolids.h"

@@ -1,10 +1,10 @@
 #include "post/PostStore.h"
 
 #include "core/Error.h"
-#include "io/SequenceName.h"
-#include "io/VdbExporter.h"
 #include "post/ManifestJson.h"
 #include "post/MeshFile.h"
+#include "post/SequenceName.h"
+#include "post/WaterVolumeFile.h"
 
 #include <filesystem>
 
@@ -71,7 +71,7 @@ void PostStore::writeFrame(const PostFrameEntry& entry, const TriangleMesh& free
                            const WaterVolume& volume) {
     createResultFolder(dir_);
     MeshFile::write(dir_ + "/" + meshName(entry.frame), freeSurface);
-    VdbExporter::write(dir_ + "/" + volumeName(entry.frame), volume, UpAxis::Y);
+    WaterVolumeFile::write(dir_ + "/" + volumeName(entry.frame), volume, UpAxis::Y);
     const std::lock_guard lock(mutex_);
     results_.put(entry);
 }
@@ -90,7 +90,7 @@ TriangleMesh PostStore::readFreeSurface(int frame) const {
 
 WaterVolume PostStore::readVolume(int frame) const {
     requireListed(frame);
-    return VdbExporter::read(dir_ + "/" + volumeName(frame));
+    return WaterVolumeFile::read(dir_ + "/" + volumeName(frame));
 }
 
 } // namespace airtrap

@@ -1,7 +1,7 @@
 #pragma once
 // The post stage's results, kept beside the cache in `<cache>/post/` (docs/CACHE_FORMAT.md): per
 // frame the free-surface mesh (`water_0001.atm`, MeshFile) and the water volume
-// (`fluid_0001.vdb`, VdbExporter), listed in `post.json` with the checksum of the cache frame
+// (`fluid_0001.vdb`, WaterVolumeFile), listed in `post.json` with the checksum of the cache frame
 // they were made from. post.json also holds the settings they were made with. A result whose
 // source frame was re-baked, or whose settings changed, is stale: not current, made again by the
 // next post run. Files are written atomically and listed only once complete, as the cache's own

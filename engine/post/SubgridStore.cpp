@@ -2,9 +2,9 @@
 
 #include "cache/FrameFile.h"
 #include "core/Error.h"
-#include "io/SequenceName.h"
 #include "post/ManifestJson.h"
 #include "post/PostStore.h"
+#include "post/SequenceName.h"
 #include "post/SubgridFile.h"
 
 #include <filesystem>

@@ -34,7 +34,7 @@ public:
                              Interrupter* interrupter = nullptr);
 
     WaterVolume() = default;
-    //! Adopts grids read back from a file (VdbExporter::read).
+    //! Adopts grids read back from a file (WaterVolumeFile::read).
     WaterVolume(std::shared_ptr<const WaterGrids> grids, double particleVolume);
 
     //! No water: nothing built yet, stopped while building, or no particles.

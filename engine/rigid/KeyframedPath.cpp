@@ -10,24 +10,24 @@
 namespace airtrap {
 namespace {
 
-[[noreturn]] void invalid(const std::string& what) {
+[[noreturn]] void invalidPath(const std::string& what) {
     throw Error(ErrorKind::InvalidInput, "keyframed path: " + what);
 }
 
 void checkKeyframes(const std::vector<KeyframedPath::Keyframe>& keyframes) {
     if (keyframes.empty())
-        invalid("needs at least one keyframe");
+        invalidPath("needs at least one keyframe");
     for (std::size_t i = 0; i < keyframes.size(); ++i) {
         const KeyframedPath::Keyframe& key = keyframes[i];
         const std::string which = "keyframe " + std::to_string(i);
         if (!std::isfinite(key.time) || !key.position.allFinite() ||
             !key.orientation.coeffs().allFinite())
-            invalid(which + " is not finite");
+            invalidPath(which + " is not finite");
         if (key.orientation.norm() == 0.0)
-            invalid(which + " has a zero quaternion");
+            invalidPath(which + " has a zero quaternion");
         if (i > 0 && key.time <= keyframes[i - 1].time)
-            invalid(which + " (t = " + std::to_string(key.time) +
-                    " s) is not later than the one before it");
+            invalidPath(which + " (t = " + std::to_string(key.time) +
+                        " s) is not later than the one before it");
     }
 }
 

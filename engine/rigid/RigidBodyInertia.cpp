@@ -10,26 +10,26 @@
 namespace airtrap {
 namespace {
 
-[[noreturn]] void invalid(const std::string& what) {
+[[noreturn]] void invalidInertia(const std::string& what) {
     throw Error(ErrorKind::InvalidInput, "rigid body inertia: " + what);
 }
 
 void checkTensor(const Mat3d& inertia) {
     if (!inertia.allFinite())
-        invalid("the inertia tensor is not finite");
+        invalidInertia("the inertia tensor is not finite");
     // Relative tolerance: tensors integrated from a mesh are symmetric only up to rounding.
     const double scale = inertia.cwiseAbs().maxCoeff();
     if ((inertia - inertia.transpose()).cwiseAbs().maxCoeff() > 1e-9 * scale)
-        invalid("the inertia tensor is not symmetric");
+        invalidInertia("the inertia tensor is not symmetric");
     if (inertia.llt().info() != Eigen::Success)
-        invalid("the inertia tensor is not positive definite");
+        invalidInertia("the inertia tensor is not positive definite");
 }
 
 } // namespace
 
 RigidBodyInertia::RigidBodyInertia(double mass, const Mat3d& inertiaBody) {
     if (!std::isfinite(mass) || mass <= 0.0)
-        invalid("mass must be finite and > 0 kg, got " + std::to_string(mass));
+        invalidInertia("mass must be finite and > 0 kg, got " + std::to_string(mass));
     checkTensor(inertiaBody);
     mass_ = mass;
     inverseMass_ = 1.0 / mass;

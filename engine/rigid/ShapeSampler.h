@@ -3,7 +3,7 @@
 // obstacle), in the body's frame with the water outside (Akinci et al. 2012: one layer suffices,
 // sampling may be non-uniform). The particles sit exactly on the surface; a caller that wants
 // them inset moves them along their normals. Volumes are left at zero: fill them with
-// BoundarySampler::computeVolumes(particles, kernel, waterSpacing).
+// BoundaryVolumes::compute(particles, kernel, waterSpacing).
 #include "rigid/BoundaryParticles.h"
 
 namespace airtrap {

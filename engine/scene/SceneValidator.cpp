@@ -4,8 +4,6 @@
 #include "scene/InflowNozzle.h"
 #include "scene/ParameterCodec.h"
 #include "scene/SceneSchema.h"
-// Body placement needs the bodies built as the solver builds them, which lives in sim/.
-#include "sim/BodyPlacementCheck.h"
 
 #include <algorithm>
 #include <cmath>
@@ -62,8 +60,6 @@ public:
         checkBubbles();
         checkSurfaceMesh();
         checkSubgridBubbles();
-        if (containerValid && issues_.ok())
-            checkBodyPlacement();
         return issues_;
     }
 
@@ -305,15 +301,6 @@ private:
         }
     }
 
-    void checkBodyPlacement() {
-        const BodyPlacementCheck::Findings findings = BodyPlacementCheck::run(scene_);
-        for (const std::string& message : findings.errors)
-            issues_.errors.push_back(message.starts_with(source_) ? message
-                                                                  : source_ + ": " + message);
-        for (const std::string& message : findings.warnings)
-            warning(message);
-    }
-
     const Scene& scene_;
     std::string source_;
     SceneIssues issues_;
@@ -354,17 +341,6 @@ std::vector<std::string> SceneValidator::ruleDescriptions() {
         "water (whose particles inside the body are left out), an obstacle, the container or "
         "each other at t = 0.",
     };
-}
-
-std::vector<std::string> validateScene(const Scene& scene) {
-    SceneIssues issues = SceneValidator::check(scene);
-    if (!issues.ok()) {
-        std::string message;
-        for (const std::string& line : issues.errors)
-            message += (message.empty() ? "" : "\n") + line;
-        throw Error(ErrorKind::InvalidScene, message);
-    }
-    return issues.warnings;
 }
 
 } // namespace airtrap

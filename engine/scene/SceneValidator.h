@@ -1,7 +1,7 @@
 #pragma once
 // Checks that need more than one field: the container's corners, fluid blocks inside it, obstacles
-// inside the domain, the particle count, overlaps. Run after reading a scene and after `--set`,
-// before baking.
+// inside the domain, the particle count, overlaps. The checks that need the bodies built come
+// after these, in sim/SceneCheck, which is what a bake and `validate` run.
 #include "scene/Scene.h"
 
 #include <string>
@@ -25,11 +25,10 @@ public:
     //! with Scene::sourcePath (or "scene") and name the JSON paths involved.
     static SceneIssues check(const Scene& scene);
 
-    //! The cross-field rules, one sentence each, for docs/SCENE_FORMAT.md.
+    //! The cross-field rules, one sentence each, for docs/SCENE_FORMAT.md; with those of
+    //! BodyPlacementCheck (a usable mesh, bodies inside the domain, overlaps at t = 0), which
+    //! SceneCheck runs after these.
     static std::vector<std::string> ruleDescriptions();
 };
-
-//! Throws Error(InvalidScene) with all errors, one per line; returns the warnings.
-std::vector<std::string> validateScene(const Scene& scene);
 
 } // namespace airtrap

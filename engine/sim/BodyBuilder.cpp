@@ -1,12 +1,12 @@
 #include "sim/BodyBuilder.h"
 
 #include "core/Error.h"
-#include "rigid/BoundarySampler.h"
 #include "rigid/EulerRotation.h"
 #include "rigid/MeshLoader.h"
 #include "rigid/ShapeSampler.h"
 #include "rigid/SignedDistanceField.h"
 #include "scene/ParameterCodec.h"
+#include "sph/BoundaryVolumes.h"
 
 #include <filesystem>
 
@@ -127,7 +127,7 @@ BoundaryParticles BodyBuilder::sampleBoundary(const RigidBodySettings& body,
     } else {
         particles = ShapeSampler::sampleSolidBox(body.size - Vec3d::Constant(spacing_), spacing_);
     }
-    BoundarySampler::computeVolumes(particles, kernel_, spacing_);
+    BoundaryVolumes::compute(particles, kernel_, spacing_);
     return particles;
 }
 

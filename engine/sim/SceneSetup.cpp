@@ -2,6 +2,7 @@
 
 #include "rigid/BoundarySampler.h"
 #include "sim/BodyBuilder.h"
+#include "sph/BoundaryVolumes.h"
 #include "sph/TaitEquationOfState.h"
 
 #include <cmath>
@@ -37,7 +38,7 @@ RigidBody boxBody(const std::string& name, const Aabb& layer, BodyShape shape, d
                   BoundarySampler::WaterSide side, bool openTop, const CubicSplineKernel& kernel) {
     const Vec3d half = 0.5 * layer.size();
     BoundaryParticles surface = BoundarySampler::sampleBox({-half, half}, spacing, side, openTop);
-    BoundarySampler::computeVolumes(surface, kernel, spacing);
+    BoundaryVolumes::compute(surface, kernel, spacing);
     RigidBody body(name, std::move(surface), std::move(shape), {layer.center(), Quatd::Identity()});
     body.setSurfaceOffset(0.5 * spacing);
     return body;

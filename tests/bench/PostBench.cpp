@@ -4,12 +4,12 @@
 // the cache; then the sub-grid bubbles, timed on their own) and the OBJ and VDB exports of the
 // same frames, and prints seconds per frame of each beside the bake's.
 #include "DamBreakScene.h"
+#include "bake/Baker.h"
 #include "cache/FrameCache.h"
 #include "core/ThreadLimit.h"
 #include "io/SequenceExporter.h"
 #include "post/PostStage.h"
 #include "scene/SceneJson.h"
-#include "sim/Baker.h"
 
 #include <CLI/CLI.hpp>
 #include <chrono>

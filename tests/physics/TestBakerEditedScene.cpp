@@ -1,10 +1,10 @@
 // "Change from here": a bake stopped at frame N, continued with edited settings, keeps frames
 // 1..N bit-for-bit and bakes the rest with the new settings; settings that define the particles
 // themselves are refused with the reason.
+#include "bake/Baker.h"
 #include "cache/FrameCache.h"
 #include "core/Error.h"
 #include "scene/SceneJson.h"
-#include "sim/Baker.h"
 #include "support/TestMain.h"
 
 #include <QTemporaryDir>

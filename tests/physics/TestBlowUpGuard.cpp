@@ -2,9 +2,9 @@
 // error, water leaving the domain), and the Baker keeps every frame finished before it,
 // recording the failure in the manifest. The density guard is driven by a bound far tighter than
 // the flow can meet, which is exactly the condition it watches for.
+#include "bake/Baker.h"
 #include "cache/FrameCache.h"
 #include "core/Error.h"
-#include "sim/Baker.h"
 #include "support/TestMain.h"
 
 #include <QTemporaryDir>

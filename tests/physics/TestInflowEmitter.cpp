@@ -3,8 +3,8 @@
 // resumed bake emits exactly what a straight one does.
 #include "cache/FrameCache.h"
 #include "scene/SceneJson.h"
-#include "scene/SceneValidator.h"
 #include "sim/InflowEmitter.h"
+#include "sim/SceneCheck.h"
 #include "sim/Simulation.h"
 #include "support/TestMain.h"
 
@@ -77,7 +77,8 @@ class TestInflowEmitter : public QObject {
 private Q_SLOTS:
     void keepsItsBudgetAndTimeWindow() {
         InflowEmitterSettings settings = disc(0.03);
-        const std::size_t perLayer = InflowEmitter(settings, kEmitterSpacing, 1000.0).particlesPerLayer();
+        const std::size_t perLayer =
+            InflowEmitter(settings, kEmitterSpacing, 1000.0).particlesPerLayer();
         settings.maxParticles = int(3 * perLayer);
         const InflowEmitter emitter(settings, kEmitterSpacing, 1000.0);
         QCOMPARE(emitter.layerBudget(), std::size_t(3));
@@ -100,8 +101,8 @@ private Q_SLOTS:
         const InflowEmitter unlimited(settings, kEmitterSpacing, 1000.0);
         SimulationState all;
         emitInSteps(unlimited, 0.0, 2.0, 7e-4, all);
-        const auto layers = std::size_t(
-            std::ceil((settings.stopTime - settings.startTime) * settings.speed / kEmitterSpacing - 1e-9));
+        const auto layers = std::size_t(std::ceil(
+            (settings.stopTime - settings.startTime) * settings.speed / kEmitterSpacing - 1e-9));
         QCOMPARE(all.fluid.size(), layers * perLayer);
         QCOMPARE(unlimited.emit(settings.stopTime, 5.0, all), std::size_t(0));
         QCOMPARE(unlimited.layersBefore(settings.startTime), std::size_t(0));
@@ -136,7 +137,8 @@ private Q_SLOTS:
             // Layer k sits (4.5 − k)·Δx beyond the nozzle plane, every particle moving at speed.
             const std::size_t layer = i / emitter.particlesPerLayer();
             const double along = (fluid.positions[i].cast<double>() - settings.position).dot(d);
-            QVERIFY(std::abs(along - (4.5 - double(layer)) * kEmitterSpacing) < 1e-3 * kEmitterSpacing);
+            QVERIFY(std::abs(along - (4.5 - double(layer)) * kEmitterSpacing) <
+                    1e-3 * kEmitterSpacing);
             QVERIFY((fluid.velocities[i].cast<double>() - settings.speed * d).norm() < 1e-5);
             QCOMPARE(fluid.densities[i], 1000.0f);
         }
@@ -157,17 +159,17 @@ private Q_SLOTS:
 
     void validatorNamesTheEmitter() {
         Scene scene = pouring();
-        QVERIFY(SceneValidator::check(scene).ok());
+        QVERIFY(SceneCheck::run(scene).ok());
         scene.emitters[0].speed = 5.0;
         scene.emitters[0].stopTime = -0.0;
         scene.emitters[0].position.x() = 0.29;
-        const SceneIssues issues = SceneValidator::check(scene);
+        const SceneIssues issues = SceneCheck::run(scene);
         QCOMPARE(issues.errors.size(), std::size_t(3));
         for (const std::string& message : issues.errors)
             QVERIFY2(message.find("emitters[0]") != std::string::npos, message.c_str());
         scene = pouring();
         scene.emitters[0].direction = Vec3d::Zero();
-        QCOMPARE(SceneValidator::check(scene).errors.size(), std::size_t(1));
+        QCOMPARE(SceneCheck::run(scene).errors.size(), std::size_t(1));
         // The emitter survives the scene file.
         const Scene reread = sceneFromJson(sceneToJson(pouring()), "test");
         QCOMPARE(reread.emitters.size(), std::size_t(1));
@@ -179,7 +181,7 @@ private Q_SLOTS:
         Scene scene = pouring();
         scene.fluidBlocks.clear();
         scene.frames.endFrame = 4;
-        QVERIFY(SceneValidator::check(scene).ok());
+        QVERIFY(SceneCheck::run(scene).ok());
         Simulation simulation(scene);
         QCOMPARE(simulation.state().fluid.size(), std::size_t(0));
         Interrupter interrupter;
@@ -193,7 +195,7 @@ private Q_SLOTS:
         QCOMPARE(simulation.state().fluid.size(), expected);
 
         scene.emitters.clear();
-        const SceneIssues issues = SceneValidator::check(scene);
+        const SceneIssues issues = SceneCheck::run(scene);
         QCOMPARE(issues.errors.size(), std::size_t(1));
         QVERIFY2(issues.errors[0].find("at least one fluid block or emitter") != std::string::npos,
                  issues.errors[0].c_str());

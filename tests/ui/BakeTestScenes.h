@@ -2,11 +2,11 @@
 // Scenes and helpers shared by the editor's bake, loader and timeline tests: the sample dam break
 // cut down so that a bake takes seconds, and a cache folder baked synchronously through the
 // engine to compare the editor's results with.
+#include "bake/Baker.h"
 #include "cache/FrameCache.h"
 #include "core/Interrupter.h"
 #include "scene/Scene.h"
 #include "scene/SceneJson.h"
-#include "sim/Baker.h"
 
 #include <QDir>
 #include <QFile>

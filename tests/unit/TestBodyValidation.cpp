@@ -1,7 +1,7 @@
 // Scene checks for rigid bodies (docs/SCENE_FORMAT.md "Validation"): what cannot be baked is
 // refused with the JSON path, the value and what was expected; bodies overlapping the water, an
 // obstacle or each other at t = 0 are warned about before a bake.
-#include "scene/SceneValidator.h"
+#include "sim/SceneCheck.h"
 #include "support/TestMain.h"
 #include "unit/SceneTestSupport.h"
 
@@ -42,7 +42,7 @@ class TestBodyValidation : public QObject {
 
 private Q_SLOTS:
     void aBodyClearOfEverythingIsFine() {
-        const SceneIssues issues = SceneValidator::check(sceneWithABox());
+        const SceneIssues issues = SceneCheck::run(sceneWithABox());
         QVERIFY(issues.ok());
         QVERIFY(issues.warnings.empty());
     }

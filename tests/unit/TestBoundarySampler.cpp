@@ -1,6 +1,7 @@
 // Boundary particles: one layer on the box faces, unit normals on the water's side, an open top
 // left out, and volumes that make a flat wall at the water's spacing stand for Δx³ each.
 #include "rigid/BoundarySampler.h"
+#include "sph/BoundaryVolumes.h"
 #include "support/TestMain.h"
 
 #include <QtTest>
@@ -47,7 +48,7 @@ private Q_SLOTS:
         const Aabb box{Vec3d::Zero(), Vec3d(1.0, 1.0, 1.0)};
         BoundaryParticles particles =
             BoundarySampler::sampleBox(box, kSpacing, BoundarySampler::WaterSide::Inside, true);
-        BoundarySampler::computeVolumes(particles, kernel, kSpacing);
+        BoundaryVolumes::compute(particles, kernel, kSpacing);
         const double cube = std::pow(kSpacing, 3);
         int faceParticles = 0;
         for (std::size_t b = 0; b < particles.size(); ++b) {

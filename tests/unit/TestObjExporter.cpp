@@ -4,7 +4,7 @@
 // four digits.
 #include "core/Error.h"
 #include "io/ObjExporter.h"
-#include "io/SequenceName.h"
+#include "post/SequenceName.h"
 #include "post/ShapeTessellation.h"
 #include "support/TestMain.h"
 

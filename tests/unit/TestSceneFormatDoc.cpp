@@ -2,7 +2,7 @@
 #include "scene/SceneFormatDoc.h"
 #include "scene/SceneJson.h"
 #include "scene/SceneSchema.h"
-#include "scene/SceneValidator.h"
+#include "sim/SceneCheck.h"
 #include "support/TestMain.h"
 #include "unit/SceneTestSupport.h"
 

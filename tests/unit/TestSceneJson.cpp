@@ -1,7 +1,7 @@
 // Scene files: the samples, round trips, and the messages for every kind of bad input (each must
 // name the file, the JSON path, the value and the allowed range).
 #include "scene/SceneJson.h"
-#include "scene/SceneValidator.h"
+#include "sim/SceneCheck.h"
 #include "support/TestMain.h"
 #include "unit/SceneTestSupport.h"
 

@@ -1,6 +1,6 @@
 // Cross-field validation: container corners, fluid blocks in the domain, obstacles in the
 // domain, the particle cap, and overlap warnings.
-#include "scene/SceneValidator.h"
+#include "sim/SceneCheck.h"
 #include "support/TestMain.h"
 #include "unit/SceneTestSupport.h"
 
@@ -37,7 +37,7 @@ class TestSceneValidator : public QObject {
 
 private Q_SLOTS:
     void validSceneHasNoIssues() {
-        const SceneIssues issues = SceneValidator::check(validScene());
+        const SceneIssues issues = SceneCheck::run(validScene());
         QVERIFY(issues.ok());
         QVERIFY(issues.warnings.empty());
     }
@@ -59,7 +59,7 @@ private Q_SLOTS:
     void fluidBlockMustBeInsideTheDomain() {
         Scene scene = validScene();
         scene.fluidBlocks[0].max.y() = 1.2; // above the rim, inside the 0.5 m headroom: falls in
-        QVERIFY(SceneValidator::check(scene).ok());
+        QVERIFY(SceneCheck::run(scene).ok());
         scene.fluidBlocks[0].max.y() = 1.6;
         std::string message = validationError(scene);
         QCOMPARE(message, std::string("tank.json: fluid_blocks[0] (\"Water\") reaches outside the "
@@ -75,7 +75,7 @@ private Q_SLOTS:
     void obstacleMustBeInsideTheDomain() {
         Scene scene = validScene();
         scene.obstacles[0].center.y() = 1.2; // reaches 1.45: inside the 0.5 m headroom
-        QVERIFY(SceneValidator::check(scene).ok());
+        QVERIFY(SceneCheck::run(scene).ok());
         scene.obstacles[0].center.y() = 1.4;
         const std::string message = validationError(scene);
         QCOMPARE(message, std::string("tank.json: obstacles[0] (\"Obstacle\") reaches outside the "

@@ -2,10 +2,10 @@
 // spacing apart, every particle on the surface with a unit normal pointing into the water, and
 // positive Akinci volumes.
 #include "MeshTestSupport.h"
-#include "rigid/BoundarySampler.h"
 #include "rigid/MeshLoader.h"
 #include "rigid/ShapeSampler.h"
 #include "rigid/SignedDistanceField.h"
+#include "sph/BoundaryVolumes.h"
 #include "support/TestMain.h"
 
 #include <QtTest>
@@ -32,7 +32,7 @@ class TestShapeSampling : public QObject {
         QVERIFY(regular >= 0.95);
         for (const Vec3f& n : particles.normals)
             QVERIFY(std::abs(n.norm() - 1.0f) < 1e-5f);
-        BoundarySampler::computeVolumes(particles, CubicSplineKernel(float(2 * spacing)), spacing);
+        BoundaryVolumes::compute(particles, CubicSplineKernel(float(2 * spacing)), spacing);
         for (float volume : particles.volumes)
             QVERIFY(volume > 0.0f);
     }

@@ -2,7 +2,7 @@
 
 #include "cache/FrameCache.h"
 #include "core/Error.h"
-#include "scene/SceneValidator.h"
+#include "sim/SceneCheck.h"
 
 #include <exception>
 

@@ -2,10 +2,10 @@
 // One bake as the editor runs it: validation, then the engine's Baker, with pause, resume and
 // stop that any thread may call. Knows nothing of Qt; SimulationController runs it on its worker
 // thread and turns the listener calls into signals.
+#include "bake/Baker.h"
 #include "controller/PauseGate.h"
 #include "controller/ProgressThrottle.h"
 #include "core/Interrupter.h"
-#include "sim/Baker.h"
 
 #include <chrono>
 #include <functional>

@@ -3,9 +3,9 @@
 // computes. The controller bakes a copy of the scene: editing the document during a bake changes
 // nothing in it. Everything it reports arrives as queued signals on the thread it lives on (the
 // GUI thread).
+#include "bake/Baker.h"
 #include "controller/BakeJob.h"
 #include "scene/Scene.h"
-#include "sim/Baker.h"
 #include "sim/FrameStats.h"
 
 #include <QObject>

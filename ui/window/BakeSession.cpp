@@ -3,7 +3,7 @@
 #include "controller/SimulationController.h"
 #include "core/Error.h"
 #include "document/SceneDocument.h"
-#include "scene/SceneValidator.h"
+#include "sim/SceneCheck.h"
 #include "timeline/FrameLoader.h"
 #include "timeline/TimelineWidget.h"
 #include "window/EditorActions.h"

@@ -1,7 +1,7 @@
 #include "window/StatusBarFields.h"
 
+#include "bake/Baker.h"
 #include "cache/FrameFile.h"
-#include "sim/Baker.h"
 #include "sim/SimulationState.h"
 
 #include <QLabel>

@@ -1,6 +1,6 @@
 // One of the few translation units that include OpenVDB's tools: their headers take long to
 // compile, so they stay out of headers and out of most .cpp files.
-#include "io/VdbExporter.h"
+#include "post/WaterVolumeFile.h"
 
 #include "core/AtomicFile.h"
 #include "core/Error.h"
@@ -51,8 +51,8 @@ openvdb::GridPtrVec exportGrids(const WaterVolume& water, UpAxis up) {
 
 } // namespace
 
-void VdbExporter::write(const std::string& path, const WaterVolume& water, UpAxis up,
-                        const Metadata& metadata) {
+void WaterVolumeFile::write(const std::string& path, const WaterVolume& water, UpAxis up,
+                            const Metadata& metadata) {
     openvdb::initialize();
     const openvdb::GridPtrVec grids = exportGrids(water, up);
     openvdb::MetaMap fileMetadata;
@@ -68,7 +68,7 @@ void VdbExporter::write(const std::string& path, const WaterVolume& water, UpAxi
     AtomicFile::write(path, bytes.str());
 }
 
-WaterVolume VdbExporter::read(const std::string& path) {
+WaterVolume WaterVolumeFile::read(const std::string& path) {
     openvdb::initialize();
     const std::vector<std::uint8_t> bytes = AtomicFile::read(path);
     try {

@@ -4,7 +4,7 @@
 // reads back into the volume it was written from, and a damaged one is refused by name.
 #include "core/AtomicFile.h"
 #include "core/Error.h"
-#include "io/VdbExporter.h"
+#include "post/WaterVolumeFile.h"
 #include "support/TestMain.h"
 
 #include <QTemporaryDir>
@@ -51,7 +51,7 @@ openvdb::GridPtrVecPtr readGrids(const std::string& path, openvdb::MetaMap::Ptr*
 
 } // namespace
 
-class TestVdbExporter : public QObject {
+class TestWaterVolumeFile : public QObject {
     Q_OBJECT
 
 private Q_SLOTS:
@@ -63,7 +63,7 @@ private Q_SLOTS:
 
     void theGridsAreWhatRenderersLookFor() {
         const std::string path = dir_.filePath("fluid_0001.vdb").toStdString();
-        VdbExporter::write(path, water_, UpAxis::Y, {{"frame", "1"}});
+        WaterVolumeFile::write(path, water_, UpAxis::Y, {{"frame", "1"}});
         openvdb::MetaMap::Ptr metadata;
         const openvdb::GridPtrVecPtr grids = readGrids(path, &metadata);
         QCOMPARE(grids->size(), std::size_t(3));
@@ -95,7 +95,7 @@ private Q_SLOTS:
 
     void zUpIsTheSameWaterTurnedAQuarterAboutX() {
         const std::string path = dir_.filePath("fluid_z.vdb").toStdString();
-        VdbExporter::write(path, water_, UpAxis::Z);
+        WaterVolumeFile::write(path, water_, UpAxis::Z);
         openvdb::MetaMap::Ptr metadata;
         const openvdb::GridPtrVecPtr grids = readGrids(path, &metadata);
         QCOMPARE(metadata->metaValue<std::string>("up_axis"), std::string("z"));
@@ -113,8 +113,8 @@ private Q_SLOTS:
 
     void aFileReadsBackIntoItsVolume() {
         const std::string path = dir_.filePath("fluid_0002.vdb").toStdString();
-        VdbExporter::write(path, water_, UpAxis::Y);
-        const WaterVolume back = VdbExporter::read(path);
+        WaterVolumeFile::write(path, water_, UpAxis::Y);
+        const WaterVolume back = WaterVolumeFile::read(path);
         QCOMPARE(back.voxelSize(), water_.voxelSize());
         QCOMPARE(back.particleVolume(), water_.particleVolume());
         QCOMPARE(back.mesh().triangleCount(), water_.mesh().triangleCount());
@@ -126,21 +126,21 @@ private Q_SLOTS:
     void noWaterStillWritesAFile() {
         const std::string path = dir_.filePath("fluid_0003.vdb").toStdString();
         const WaterVolume none = WaterVolume::build(ParticleSet(), kSpacing, {});
-        VdbExporter::write(path, none, UpAxis::Y);
-        const WaterVolume back = VdbExporter::read(path);
+        WaterVolumeFile::write(path, none, UpAxis::Y);
+        const WaterVolume back = WaterVolumeFile::read(path);
         QVERIFY(back.empty());
         QCOMPARE(back.voxelSize(), 0.5 * kSpacing);
     }
 
     void aDamagedFileIsRefusedByName() {
         const std::string good = dir_.filePath("fluid_0004.vdb").toStdString();
-        VdbExporter::write(good, water_, UpAxis::Y);
+        WaterVolumeFile::write(good, water_, UpAxis::Y);
         std::vector<std::uint8_t> bytes = AtomicFile::read(good);
         bytes.resize(bytes.size() / 2);
         const std::string broken = dir_.filePath("fluid_0005.vdb").toStdString();
         AtomicFile::write(broken, bytes);
         try {
-            VdbExporter::read(broken);
+            WaterVolumeFile::read(broken);
             QFAIL("expected an error");
         } catch (const Error& error) {
             QCOMPARE(int(error.kind()), int(ErrorKind::CacheCorrupt));
@@ -153,5 +153,5 @@ private:
     WaterVolume water_;
 };
 
-AIRTRAP_TEST_APPLESS(TestVdbExporter)
-#include "TestVdbExporter.moc"
+AIRTRAP_TEST_APPLESS(TestWaterVolumeFile)
+#include "TestWaterVolumeFile.moc"

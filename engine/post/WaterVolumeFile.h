@@ -1,6 +1,7 @@
 #pragma once
-// The water as OpenVDB volumes, one file per frame (`fluid_0001.vdb`, docs/CLI.md "export"), named
-// the way renderers look for them without renaming:
+// The water as an OpenVDB file, one per frame (`fluid_0001.vdb`): what the post stage stores and
+// what the export writes (docs/CLI.md "export"), with grids named the way renderers look for them
+// without renaming:
 //   surface  float, level-set class: signed distance in metres, negative inside the water
 //   density  float, fog-volume class: 0 outside, rising through the surface's band to 1 inside
 //            (Blender's volume shader reads `density`)
@@ -8,7 +9,7 @@
 //            (motion blur in Houdini, Blender and Arnold)
 // File metadata names the units, the up axis and the voxel size; each grid's transform carries
 // the voxel size, and for z up a quarter turn about x.
-#include "io/UpAxis.h"
+#include "core/UpAxis.h"
 #include "post/WaterVolume.h"
 
 #include <string>
@@ -17,7 +18,7 @@
 
 namespace airtrap {
 
-class VdbExporter {
+class WaterVolumeFile {
 public:
     using Metadata = std::vector<std::pair<std::string, std::string>>;
 

@@ -1,4 +1,4 @@
-#include "sim/Baker.h"
+#include "bake/Baker.h"
 
 #include "cache/FrameCache.h"
 #include "core/Error.h"
