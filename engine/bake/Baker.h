@@ -2,6 +2,7 @@
 // The bake loop both the CLI and the editor run: Scene → Simulation → FrameCache, one frame at a
 // time, every finished frame written atomically before the next one starts, so a stop, a crash or
 // a blow-up never loses a finished frame and `resume` continues bit-for-bit.
+#include "bake/BakeProgress.h"
 #include "core/Interrupter.h"
 #include "scene/Scene.h"
 #include "sim/FrameStats.h"
@@ -33,18 +34,6 @@ struct BakeOptions {
     //! stay and the bake goes on with the new settings (the editor's "change from here"). Settings
     //! that fix the particles themselves (spacing, support, rest density) must not differ.
     bool adoptEditedScene = false;
-};
-
-//! Reported after every step and every frame.
-struct BakeProgress {
-    int frame = 0; //!< the frame being computed
-    int lastFrame = 0;
-    double simTime = 0.0;       //!< s
-    double frameFraction = 0.0; //!< 0–1 of the current frame
-    double stepsPerSecond = 0.0;
-    std::size_t particles = 0;
-    std::size_t bubbles = 0;  //!< alive after the step
-    double etaSeconds = -1.0; //!< negative until a frame has finished
 };
 
 class Baker {

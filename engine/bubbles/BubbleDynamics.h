@@ -14,7 +14,8 @@
 //  water (BubbleImmersion's probes), so a bubble breaking the surface is no longer pulled up by
 //  water that is not there, and one in the air feels neither.
 //  - bubble–bubble impulses with non-positive restitution (BubblePairImpulse).
-// The bubbles' bodies sit at the end of the solver's body list, from index `first` on.
+// The bubbles' bodies sit at the end of the rigid world's body list (sim/RigidWorld), from index
+// `first` on.
 #include "bubbles/BubbleBodyFactory.h"
 #include "bubbles/BubblePairImpulse.h"
 #include "bubbles/BubbleState.h"

@@ -37,7 +37,7 @@ void appendObject(std::string& text, const NamedMesh& object, UpAxis up, std::si
         text += 'v';
         appendTriple(text, toExportAxes(v, up));
     }
-    for (const Vec3d& n : vertexNormals(object.mesh)) {
+    for (const Vec3d& n : object.mesh.vertexNormals()) {
         text += "vn";
         appendTriple(text, toExportAxes(n, up));
     }
@@ -58,17 +58,6 @@ void appendObject(std::string& text, const NamedMesh& object, UpAxis up, std::si
 }
 
 } // namespace
-
-std::vector<Vec3d> vertexNormals(const TriangleMesh& mesh) {
-    std::vector<Vec3d> normals(mesh.vertices.size(), Vec3d::Zero());
-    for (std::size_t t = 0; t < mesh.triangleCount(); ++t)
-        for (const std::uint32_t v : mesh.triangles[t])
-            normals[v] += mesh.areaVector(t);
-    for (Vec3d& n : normals)
-        if (n.squaredNorm() > 0.0)
-            n.normalize();
-    return normals;
-}
 
 std::string ObjExporter::encode(const std::vector<NamedMesh>& objects, UpAxis up,
                                 const std::vector<std::string>& comments) {

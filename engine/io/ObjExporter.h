@@ -22,8 +22,4 @@ public:
                       const std::vector<std::string>& comments = {});
 };
 
-//! Unit normal per vertex: the sum of its triangles' area vectors, normalised (zero for a vertex
-//! no triangle uses).
-std::vector<Vec3d> vertexNormals(const TriangleMesh& mesh);
-
 } // namespace airtrap

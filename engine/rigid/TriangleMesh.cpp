@@ -17,6 +17,17 @@ Aabb TriangleMesh::bounds() const {
     return box;
 }
 
+std::vector<Vec3d> TriangleMesh::vertexNormals() const {
+    std::vector<Vec3d> normals(vertices.size(), Vec3d::Zero());
+    for (std::size_t t = 0; t < triangleCount(); ++t)
+        for (const std::uint32_t v : triangles[t])
+            normals[v] += areaVector(t);
+    for (Vec3d& n : normals)
+        if (n.squaredNorm() > 0.0)
+            n.normalize();
+    return normals;
+}
+
 Vec3d TriangleMesh::areaVector(std::size_t t) const {
     const Triangle& tri = triangles[t];
     const Vec3d& a = vertices[tri[0]];

@@ -31,6 +31,9 @@ struct TriangleMesh {
 
     //! Unnormalised normal of triangle `t`: its length is twice the area, m².
     Vec3d areaVector(std::size_t t) const;
+    //! Unit normal per vertex: the sum of its triangles' area vectors, normalised (zero for a
+    //! vertex no triangle uses); what smooth shading and the OBJ export's `vn` lines use.
+    std::vector<Vec3d> vertexNormals() const;
     //! Unit normal of triangle `t` (zero for a degenerate triangle).
     Vec3d normal(std::size_t t) const;
     double area(std::size_t t) const;

@@ -1,10 +1,10 @@
 // The timeline's frame loader: reads frames off the GUI thread, keeps recent ones in a small
 // LRU, answers only the newest request, and reports damaged or vanished frames by name.
 #include "BakeTestScenes.h"
+#include "controller/FrameLoader.h"
+#include "controller/FrameLru.h"
+#include "controller/LoadRequests.h"
 #include "support/WidgetTestMain.h"
-#include "timeline/FrameLoader.h"
-#include "timeline/FrameLru.h"
-#include "timeline/LoadRequests.h"
 
 #include <QSignalSpy>
 #include <QTemporaryDir>

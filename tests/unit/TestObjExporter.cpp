@@ -66,12 +66,12 @@ private Q_SLOTS:
 
     void normalsFaceOutOfTheirSolid() {
         const TriangleMesh sphere = tessellateSphere(0.5);
-        const std::vector<Vec3d> normals = vertexNormals(sphere);
+        const std::vector<Vec3d> normals = sphere.vertexNormals();
         for (std::size_t v = 0; v < sphere.vertices.size(); ++v)
             QVERIFY(normals[v].dot(sphere.vertices[v].normalized()) > 0.999);
         // A box's faces keep their own vertices, so its normals stay flat.
         const TriangleMesh box = tessellateBox(Vec3d::Ones());
-        for (const Vec3d& n : vertexNormals(box))
+        for (const Vec3d& n : box.vertexNormals())
             QVERIFY(std::abs(n.cwiseAbs().maxCoeff() - 1.0) < 1e-12);
     }
 

@@ -1,9 +1,9 @@
 #include "panels/BodyAddMenu.h"
 
+#include "controller/BodyMeshCache.h"
 #include "core/Error.h"
 #include "document/BodyTemplate.h"
 #include "document/SceneDocument.h"
-#include "sim/BodyBuilder.h"
 
 #include <QAction>
 #include <QDir>
@@ -78,7 +78,7 @@ void BodyAddMenu::addMesh(const QString& file) {
     scene.bodies.push_back(candidate);
     TriangleMesh mesh;
     try {
-        mesh = BodyBuilder::loadMesh(scene, scene.bodies.back());
+        mesh = BodyMeshCache::readMesh(scene, scene.bodies.back());
     } catch (const Error& error) {
         Q_EMIT meshRefused(QString::fromUtf8(error.what()));
         return;

@@ -2,10 +2,10 @@
 // The scene's rigid bodies as the viewport shows them: each body's surface, its colour's motion
 // and where it is — its scene pose in edit mode (a keyframed body at its first keyframe), or the
 // pose a cached frame recorded in playback. Drawing and picking read the same poses.
+#include "controller/BodyMeshCache.h"
 #include "document/SceneItem.h"
 #include "rigid/RigidBodyState.h"
 #include "scene/Scene.h"
-#include "viewport/BodyMeshCache.h"
 #include "viewport/PickHit.h"
 #include "viewport/Ray.h"
 

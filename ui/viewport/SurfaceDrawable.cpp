@@ -1,6 +1,6 @@
 #include "viewport/SurfaceDrawable.h"
 
-#include "io/ObjExporter.h"
+#include "rigid/TriangleMesh.h"
 #include "viewport/QtVectors.h"
 #include "viewport/RenderContext.h"
 #include "viewport/ShaderSources.h"
@@ -126,7 +126,7 @@ void SurfaceDrawable::upload() {
     uploadedIndices_ = 0;
     if (!mesh_ || mesh_->triangles.empty())
         return;
-    const std::vector<Vec3d> normals = vertexNormals(*mesh_);
+    const std::vector<Vec3d> normals = mesh_->vertexNormals();
     std::vector<float> vertices;
     vertices.reserve(6 * mesh_->vertices.size());
     for (std::size_t v = 0; v < mesh_->vertices.size(); ++v)

@@ -6,11 +6,11 @@
 // cursor and reports it with itemPicked(). The widget never selects by itself: whoever owns the
 // selection answers with setSelection().
 #include "cache/FrameFile.h"
+#include "controller/BodyMeshCache.h"
 #include "document/SceneItem.h"
 #include "scene/Scene.h"
 #include "viewport/AxesDrawable.h"
 #include "viewport/BodyDrawable.h"
-#include "viewport/BodyMeshCache.h"
 #include "viewport/BoxGizmoDrawable.h"
 #include "viewport/BubbleDrawable.h"
 #include "viewport/DragTracker.h"

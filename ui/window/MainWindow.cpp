@@ -1,6 +1,9 @@
 #include "window/MainWindow.h"
 
-#include "cache/FrameCache.h"
+#include "controller/BakeSession.h"
+#include "controller/CacheReader.h"
+#include "controller/FrameLoader.h"
+#include "controller/PostResultLoader.h"
 #include "controller/RenderOutputController.h"
 #include "controller/SimulationController.h"
 #include "core/Error.h"
@@ -8,13 +11,9 @@
 #include "panels/BodyAddMenu.h"
 #include "panels/ParameterPanel.h"
 #include "panels/SceneTreePanel.h"
-#include "scene/SceneJson.h"
 #include "scene/SceneSchema.h"
-#include "timeline/FrameLoader.h"
-#include "timeline/PostResultLoader.h"
 #include "timeline/TimelineWidget.h"
 #include "viewport/ViewportWidget.h"
-#include "window/BakeSession.h"
 #include "window/CacheLocation.h"
 #include "window/EditorActions.h"
 #include "window/EditorSettings.h"
@@ -398,9 +397,7 @@ bool MainWindow::openCacheFolder(const QString& dir) {
     if (!maybeSave() || !bakeSession_->releaseCache())
         return false;
     try {
-        const FrameCache cache = FrameCache::open(dir.toStdString());
-        Scene scene = sceneFromJson(cache.manifest().scene, (dir + "/manifest.json").toStdString());
-        document_->adoptScene(std::move(scene));
+        document_->adoptScene(CacheReader::sceneOf(dir.toStdString()));
     } catch (const Error& error) {
         showError(tr("Cannot open cache"), QString::fromUtf8(error.what()));
         return false;

@@ -1,6 +1,6 @@
 #include "window/ScreenshotJob.h"
 
-#include "timeline/FrameLoader.h"
+#include "controller/FrameLoader.h"
 #include "viewport/SurfaceShading.h"
 #include "viewport/ViewportWidget.h"
 #include "window/EditorActions.h"

@@ -1,6 +1,6 @@
 #include "window/StatusBarFields.h"
 
-#include "bake/Baker.h"
+#include "bake/BakeProgress.h"
 #include "cache/FrameFile.h"
 #include "sim/SimulationState.h"
 

@@ -1,4 +1,4 @@
-#include "timeline/PostResultLoader.h"
+#include "controller/PostResultLoader.h"
 
 #include "cache/FrameCache.h"
 #include "core/Error.h"

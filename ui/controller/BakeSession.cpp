@@ -1,10 +1,10 @@
-#include "window/BakeSession.h"
+#include "controller/BakeSession.h"
 
+#include "controller/FrameLoader.h"
 #include "controller/SimulationController.h"
 #include "core/Error.h"
 #include "document/SceneDocument.h"
 #include "sim/SceneCheck.h"
-#include "timeline/FrameLoader.h"
 #include "timeline/TimelineWidget.h"
 #include "window/EditorActions.h"
 #include "window/LogPanel.h"

@@ -1,4 +1,4 @@
-#include "timeline/FrameLoader.h"
+#include "controller/FrameLoader.h"
 
 #include <QThread>
 

@@ -1,4 +1,4 @@
-#include "timeline/LoadRequests.h"
+#include "controller/LoadRequests.h"
 
 #include <utility>
 

@@ -5,6 +5,7 @@
 // answer could be stale instead of failing.
 #include "cache/FrameCache.h"
 #include "core/Error.h"
+#include "scene/Scene.h"
 
 #include <optional>
 #include <string>
@@ -14,6 +15,10 @@ namespace airtrap {
 
 class CacheReader {
 public:
+    //! The scene a cache folder was baked from (its manifest's copy). Throws airtrap::Error
+    //! naming the folder or the manifest when there is no readable cache.
+    static Scene sceneOf(const std::string& directory);
+
     //! Switches to `directory` ("" = none) and reads its manifest if there is one.
     void open(const std::string& directory);
     //! Re-reads the manifest (opening the cache if it appeared since). A folder without a

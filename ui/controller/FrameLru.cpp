@@ -1,4 +1,4 @@
-#include "timeline/FrameLru.h"
+#include "controller/FrameLru.h"
 
 #include <algorithm>
 

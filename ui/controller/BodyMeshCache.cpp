@@ -1,4 +1,4 @@
-#include "viewport/BodyMeshCache.h"
+#include "controller/BodyMeshCache.h"
 
 #include "core/Error.h"
 #include "rigid/MassProperties.h"
@@ -25,6 +25,10 @@ BodyMeshCache::Entry BodyMeshCache::shapeOf(const Scene& scene, const RigidBodyS
             {}};
 }
 
+TriangleMesh BodyMeshCache::readMesh(const Scene& scene, const RigidBodySettings& body) {
+    return BodyBuilder::loadMesh(scene, body);
+}
+
 BodyMeshCache::Entry BodyMeshCache::meshOf(const Scene& scene, const RigidBodySettings& body) {
     const std::string path = BodyBuilder::meshPath(scene, body);
     const QFileInfo file(QString::fromStdString(path));
@@ -34,7 +38,7 @@ BodyMeshCache::Entry BodyMeshCache::meshOf(const Scene& scene, const RigidBodySe
         return found->second;
     Entry entry;
     try {
-        const TriangleMesh mesh = BodyBuilder::loadMesh(scene, body);
+        const TriangleMesh mesh = readMesh(scene, body);
         // Density does not move the centre of mass of a uniform solid.
         entry.centreOfMass = MassProperties::ofMesh(mesh, 1.0).centreOfMass;
         entry.solid = std::make_shared<const SolidMesh>(SolidMesh::fromMesh(mesh));

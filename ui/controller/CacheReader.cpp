@@ -1,10 +1,16 @@
-#include "timeline/CacheReader.h"
+#include "controller/CacheReader.h"
 
 #include "core/Error.h"
+#include "scene/SceneJson.h"
 
 #include <utility>
 
 namespace airtrap {
+
+Scene CacheReader::sceneOf(const std::string& directory) {
+    const FrameCache cache = FrameCache::open(directory);
+    return sceneFromJson(cache.manifest().scene, directory + "/manifest.json");
+}
 
 void CacheReader::open(const std::string& directory) {
     directory_ = directory;

@@ -4,9 +4,9 @@
 // only the answer to the newest request is delivered, so scrubbing shows where the user is now,
 // not where they were.
 #include "cache/FrameFile.h"
-#include "timeline/CacheReader.h"
-#include "timeline/FrameLru.h"
-#include "timeline/LoadRequests.h"
+#include "controller/CacheReader.h"
+#include "controller/FrameLru.h"
+#include "controller/LoadRequests.h"
 
 #include <QList>
 #include <QObject>
