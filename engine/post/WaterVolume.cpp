@@ -4,6 +4,8 @@
 
 #include "core/Error.h"
 #include "post/WaterGrids.h"
+#include "scene/SceneSchema.h"
+#include "scene/SceneValidator.h"
 
 #include <algorithm>
 #include <array>
@@ -50,23 +52,19 @@ private:
 };
 
 //! The scene validator refuses these before a bake; a caller with its own settings (a test, a
-//! tool) gets the same rules here, worded with the scene's keys.
+//! tool) gets the same rules here, from the same declarations, worded with the scene's keys.
 void checkSettings(double spacing, const SurfaceMeshSettings& settings) {
-    const auto refuse = [](const std::string& what) {
-        throw Error(ErrorKind::InvalidInput, "free-surface mesh: " + what);
-    };
-    if (!(spacing > 0.0))
-        refuse("solver.particle_spacing = " + std::to_string(spacing) + " m, expected > 0");
-    if (!(settings.voxelSize >= 0.1 && settings.voxelSize <= 2.0))
-        refuse("surface_mesh.voxel_size = " + std::to_string(settings.voxelSize) +
-               ", expected 0.1 to 2");
-    // OpenVDB drops spheres narrower than 1.5 voxels; a surface made of them would have holes.
-    if (!(settings.particleRadius >= 1.5 * settings.voxelSize && settings.particleRadius <= 4.0))
-        refuse("surface_mesh.particle_radius = " + std::to_string(settings.particleRadius) +
-               ", expected 1.5 × surface_mesh.voxel_size to 4");
-    if (settings.smoothing < 0 || settings.smoothing > 50)
-        refuse("surface_mesh.smoothing = " + std::to_string(settings.smoothing) +
-               ", expected 0 to 50");
+    Scene scene;
+    scene.solver.particleSpacing = spacing;
+    scene.surfaceMesh = settings;
+    for (const std::string& problem :
+         {SceneSchema::check(scene, &SolverSettings::particleSpacing),
+          SceneSchema::check(scene, &SurfaceMeshSettings::voxelSize),
+          SceneSchema::check(scene, &SurfaceMeshSettings::particleRadius),
+          SceneSchema::check(scene, &SurfaceMeshSettings::smoothing),
+          SceneValidator::surfaceMeshRule(settings)})
+        if (!problem.empty())
+            throw Error(ErrorKind::InvalidInput, "free-surface mesh: " + problem);
 }
 
 using SurfaceFilter =

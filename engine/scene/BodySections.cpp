@@ -16,7 +16,6 @@ ParameterDeclaration rotationDeclaration(std::string help) {
             .unit = "°",
             .minimum = -360.0,
             .maximum = 360.0,
-            .defaultValue = Vec3d(0.0, 0.0, 0.0),
             .help = std::move(help)};
 }
 
@@ -26,20 +25,17 @@ std::vector<BoundParameter> bodyPlacementParameters() {
                           .label = "Name",
                           .minimum = 1,
                           .maximum = kMaxNameLength,
-                          .defaultValue = std::string("Body"),
                           .help = "Shown in the scene tree and in messages; keyframes refer to "
                                   "the body by it."},
                          &RigidBodySettings::name),
         bind<BodyAccess>({.key = "shape",
                           .label = "Shape",
-                          .defaultValue = std::string("box"),
                           .help = "Box (size), sphere (radius), cylinder (radius, height along "
                                   "its y axis) or a closed triangle mesh read from a file.",
                           .choices = {"box", "sphere", "cylinder", "mesh"}},
                          &RigidBodySettings::shape),
         bind<BodyAccess>({.key = "motion",
                           .label = "Motion",
-                          .defaultValue = std::string("dynamic"),
                           .help = "Static: never moves. Dynamic: moved by the water, gravity "
                                   "and contacts. Kinematic: follows its keyframes (or its "
                                   "velocities when it has none) and pushes the water.",
@@ -50,7 +46,6 @@ std::vector<BoundParameter> bodyPlacementParameters() {
                           .unit = "m",
                           .minimum = -kMaxCoordinate,
                           .maximum = kMaxCoordinate,
-                          .defaultValue = Vec3d(0.5, 0.5, 0.5),
                           .help = "Centre of a box, sphere or cylinder; where a mesh's own "
                                   "origin goes."},
                          &RigidBodySettings::position),
@@ -68,7 +63,6 @@ std::vector<BoundParameter> bodyShapeParameters() {
                           .minimum = 0.0,
                           .maximum = kMaxCoordinate,
                           .minimumExclusive = true,
-                          .defaultValue = Vec3d(0.1, 0.1, 0.1),
                           .help = "Edge lengths of a box along its x, y and z axes."},
                          &RigidBodySettings::size),
         bind<BodyAccess>({.key = "radius",
@@ -77,7 +71,6 @@ std::vector<BoundParameter> bodyShapeParameters() {
                           .minimum = 0.0,
                           .maximum = 100.0,
                           .minimumExclusive = true,
-                          .defaultValue = 0.05,
                           .help = "Radius of a sphere or cylinder."},
                          &RigidBodySettings::radius),
         bind<BodyAccess>({.key = "height",
@@ -86,14 +79,12 @@ std::vector<BoundParameter> bodyShapeParameters() {
                           .minimum = 0.0,
                           .maximum = 100.0,
                           .minimumExclusive = true,
-                          .defaultValue = 0.1,
                           .help = "Length of a cylinder along its y axis."},
                          &RigidBodySettings::height),
         bind<BodyAccess>({.key = "mesh",
                           .label = "Mesh file",
                           .minimum = 0,
                           .maximum = 4096,
-                          .defaultValue = std::string(""),
                           .help = "A closed triangle mesh (OBJ, PLY, STL or any format assimp "
                                   "reads), relative to the scene file; shape mesh only."},
                          &RigidBodySettings::mesh),
@@ -102,7 +93,6 @@ std::vector<BoundParameter> bodyShapeParameters() {
                           .minimum = 0.0,
                           .maximum = 1000.0,
                           .minimumExclusive = true,
-                          .defaultValue = 1.0,
                           .help = "Multiplies the mesh file's coordinates to give metres."},
                          &RigidBodySettings::meshScale),
     };
@@ -115,7 +105,6 @@ std::vector<BoundParameter> bodyDynamicsParameters() {
                           .unit = "kg/m³",
                           .minimum = 1.0,
                           .maximum = 100000.0,
-                          .defaultValue = 500.0,
                           .help = "Of the solid; with its volume it gives mass, centre of mass "
                                   "and inertia. Below the water's rest density a body floats."},
                          &RigidBodySettings::density),
@@ -124,7 +113,6 @@ std::vector<BoundParameter> bodyDynamicsParameters() {
                           .unit = "m/s",
                           .minimum = -100.0,
                           .maximum = 100.0,
-                          .defaultValue = Vec3d(0.0, 0.0, 0.0),
                           .help = "At t = 0 for a dynamic body; throughout for a kinematic body "
                                   "without keyframes."},
                          &RigidBodySettings::linearVelocity),
@@ -133,7 +121,6 @@ std::vector<BoundParameter> bodyDynamicsParameters() {
                           .unit = "rad/s",
                           .minimum = -1000.0,
                           .maximum = 1000.0,
-                          .defaultValue = Vec3d(0.0, 0.0, 0.0),
                           .help = "About the world axes through the body's centre; at t = 0 or "
                                   "throughout, as the linear velocity."},
                          &RigidBodySettings::angularVelocity),
@@ -141,7 +128,6 @@ std::vector<BoundParameter> bodyDynamicsParameters() {
                           .label = "Restitution",
                           .minimum = 0.0,
                           .maximum = 1.0,
-                          .defaultValue = 0.0,
                           .help = "Share of the approach speed kept after a contact with water "
                                   "or another body (0 = no bounce)."},
                          &RigidBodySettings::restitution),
@@ -149,7 +135,6 @@ std::vector<BoundParameter> bodyDynamicsParameters() {
                           .label = "Friction",
                           .minimum = 0.0,
                           .maximum = 2.0,
-                          .defaultValue = 0.4,
                           .help = "Coulomb friction coefficient μ of its contacts: the tangential "
                                   "impulse is at most μ times the normal one."},
                          &RigidBodySettings::friction),
@@ -178,7 +163,6 @@ SchemaSection keyframesSection() {
                                .label = "Body",
                                .minimum = 1,
                                .maximum = kMaxNameLength,
-                               .defaultValue = std::string("Body"),
                                .help = "Name of the kinematic body this pose belongs to."},
                               &BodyKeyframe::body),
          bind<KeyframeAccess>({.key = "time",
@@ -186,7 +170,6 @@ SchemaSection keyframesSection() {
                                .unit = "s",
                                .minimum = 0.0,
                                .maximum = 100000.0,
-                               .defaultValue = 0.0,
                                .help = "Simulated time of the pose."},
                               &BodyKeyframe::time),
          bind<KeyframeAccess>({.key = "position",
@@ -194,7 +177,6 @@ SchemaSection keyframesSection() {
                                .unit = "m",
                                .minimum = -kMaxCoordinate,
                                .maximum = kMaxCoordinate,
-                               .defaultValue = Vec3d(0.5, 0.5, 0.5),
                                .help = "The body's position at that time."},
                               &BodyKeyframe::position),
          bind<KeyframeAccess>(rotationDeclaration("The body's rotation at that time, as the "

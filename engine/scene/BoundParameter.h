@@ -3,6 +3,7 @@
 #include "scene/ParameterDeclaration.h"
 #include "scene/Scene.h"
 
+#include <any>
 #include <cstddef>
 #include <functional>
 
@@ -19,6 +20,11 @@ struct BoundParameter {
     //! values are converted into each other; any other kind mismatch throws
     //! Error(InvalidInput).
     std::function<void(Scene& scene, std::size_t element, const ParameterValue& value)> set;
+
+    //! The bound field as a pointer to member (`&SolverSettings::maxSpeed`), so that code can
+    //! name a parameter by its field and get its key from here (SceneSchema::keyOf); empty for
+    //! a parameter bound to no field.
+    std::any field{};
 };
 
 } // namespace airtrap

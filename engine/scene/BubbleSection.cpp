@@ -13,7 +13,6 @@ std::vector<BoundParameter> creationParameters() {
     return {
         bind<BubbleAccess>({.key = "enabled",
                             .label = "Simulate bubbles",
-                            .defaultValue = false,
                             .help = "Turns air pockets the water encloses into bubbles. Off, the "
                                     "water bakes exactly as a water-only scene."},
                            &BubbleSettings::enabled),
@@ -21,7 +20,6 @@ std::vector<BoundParameter> creationParameters() {
                             .label = "Density ratio",
                             .minimum = 0.01,
                             .maximum = 1.0,
-                            .defaultValue = 0.1,
                             .help = "Bubble density over water density. Real air is 0.001; "
                                     "weakly compressible SPH stays stable down to about 0.1 "
                                     "(paper §3.2)."},
@@ -31,7 +29,6 @@ std::vector<BoundParameter> creationParameters() {
                             .unit = "× spacing",
                             .minimum = 1.0,
                             .maximum = 20.0,
-                            .defaultValue = 1.0,
                             .help = "Air pockets whose fitted bubble would be smaller make no "
                                     "bubble (they are left to the sub-grid bubbles). One spacing "
                                     "lets a single empty grid cell (two spacings wide) count."},
@@ -40,7 +37,6 @@ std::vector<BoundParameter> creationParameters() {
                             .label = "New bubbles per frame",
                             .minimum = 0,
                             .maximum = 1000,
-                            .defaultValue = 5LL,
                             .help = "At most this many pockets, chosen at random with the "
                                     "scene's seed, become bubbles in each frame."},
                            &BubbleSettings::maxNewPerFrame),
@@ -48,7 +44,6 @@ std::vector<BoundParameter> creationParameters() {
                             .label = "Water around a new bubble",
                             .minimum = 0.5,
                             .maximum = 1.0,
-                            .defaultValue = 0.5,
                             .help = "A pocket becomes a bubble only under water: the water must "
                                     "cover its top and at least this share of the 26 probes "
                                     "around the bubble (docs/METHOD.md, \"Creation\"). Lower "
@@ -60,7 +55,6 @@ std::vector<BoundParameter> creationParameters() {
                             .unit = "steps",
                             .minimum = 1,
                             .maximum = 10000,
-                            .defaultValue = 10LL,
                             .help = "Steps between searches for air pockets. Without air "
                                     "pressure a trapped pocket closes within a few hundredths "
                                     "of a second, so it must be found soon after it forms."},
@@ -75,7 +69,6 @@ std::vector<BoundParameter> dynamicsParameters() {
                             .unit = "m²/s",
                             .minimum = 1.0e-7,
                             .maximum = 1.0e-2,
-                            .defaultValue = 1.0e-6,
                             .help = "Kinematic viscosity in the Stokes rise speed "
                                     "v = 2/9 g R² / ν (paper eq. 5) and the Stokes drag. Water "
                                     "at 20 °C: 1.0e-6."},
@@ -85,7 +78,6 @@ std::vector<BoundParameter> dynamicsParameters() {
                             .unit = "m/s",
                             .minimum = 0.01,
                             .maximum = 10.0,
-                            .defaultValue = 0.25,
                             .help = "Caps the Stokes speed, which grows with R² (2.2 m/s at "
                                     "R = 1 mm). Real centimetre bubbles rise at 0.2–0.3 m/s."},
                            &BubbleSettings::maxRiseSpeed),
@@ -94,7 +86,6 @@ std::vector<BoundParameter> dynamicsParameters() {
                             .unit = "s",
                             .minimum = 0.001,
                             .maximum = 10.0,
-                            .defaultValue = 0.02,
                             .help = "Time constant with which the auxiliary buoyancy steers a "
                                     "submerged bubble's vertical speed toward the water's plus "
                                     "the capped Stokes speed."},
@@ -104,7 +95,6 @@ std::vector<BoundParameter> dynamicsParameters() {
                             .unit = "1/s",
                             .minimum = 0.0,
                             .maximum = 1000.0,
-                            .defaultValue = 10.0,
                             .help = "The object's friction k of eq. 6, per unit of bubble mass: "
                                     "the rate at which a bubble takes on the surrounding water's "
                                     "velocity, on top of the Stokes drag 6πρνR."},
@@ -113,7 +103,6 @@ std::vector<BoundParameter> dynamicsParameters() {
                             .label = "Restitution approaching (ε₁)",
                             .minimum = -1.0,
                             .maximum = 0.0,
-                            .defaultValue = -0.6,
                             .help = "Non-positive coefficient of restitution between bubbles "
                                     "that touch and approach (paper §3.3.2): −1 no interaction, "
                                     "between −1 and 0 a weak repulsion that lets them overlap."},
@@ -122,7 +111,6 @@ std::vector<BoundParameter> dynamicsParameters() {
                             .label = "Restitution overlapping (ε₂)",
                             .minimum = -1.0,
                             .maximum = 0.0,
-                            .defaultValue = -0.2,
                             .help = "The same between bubbles that already overlap; at least "
                                     "ε₁. Nearer 0 slows their merging down."},
                            &BubbleSettings::overlapRestitution),
@@ -136,7 +124,6 @@ std::vector<BoundParameter> deletionParameters() {
                             .unit = "s",
                             .minimum = 0.0,
                             .maximum = 1000.0,
-                            .defaultValue = 10.0,
                             .help = "A bubble older than this is deleted (rule 1 of §3.4)."},
                            &BubbleSettings::maxAge),
         bind<BubbleAccess>({.key = "max_floating_time",
@@ -144,7 +131,6 @@ std::vector<BoundParameter> deletionParameters() {
                             .unit = "s",
                             .minimum = 0.0,
                             .maximum = 1000.0,
-                            .defaultValue = 0.5,
                             .help = "A bubble floating at the free surface (water against a "
                                     "quarter to a half of it) for longer than this pops (rule 2). "
                                     "One with less water around it has left the water and pops "
@@ -154,7 +140,6 @@ std::vector<BoundParameter> deletionParameters() {
                             .label = "Maximum overlap",
                             .minimum = 0.0,
                             .maximum = 1.0,
-                            .defaultValue = 0.5,
                             .help = "When two bubbles overlap by more than this share of the "
                                     "smaller one's diameter, the smaller is deleted (rule 3)."},
                            &BubbleSettings::maxOverlap),
@@ -163,7 +148,6 @@ std::vector<BoundParameter> deletionParameters() {
                             .unit = "m/s",
                             .minimum = 0.0,
                             .maximum = 100.0,
-                            .defaultValue = 2.0,
                             .help = "A floating bubble hit by water approaching faster than this "
                                     "pops (rule 4)."},
                            &BubbleSettings::impactSpeed),

@@ -22,7 +22,6 @@ SchemaSection surfaceMeshSection() {
         {
             bind<SurfaceAccess>({.key = "mode",
                                  .label = "Mesh",
-                                 .defaultValue = std::string("free_surface"),
                                  .help = "free_surface: the paper's mesh, without the polygons "
                                          "along bodies and bubbles, whose own surfaces render "
                                          "there. closed: the whole watertight surface of the "
@@ -35,7 +34,6 @@ SchemaSection surfaceMeshSection() {
                                  .unit = "× spacing",
                                  .minimum = 0.1,
                                  .maximum = 2.0,
-                                 .defaultValue = 0.5,
                                  .help = "Edge of the level set's voxels. Halving it shows finer "
                                          "ripples for four times the polygons."},
                                 &SurfaceMeshSettings::voxelSize),
@@ -44,7 +42,6 @@ SchemaSection surfaceMeshSection() {
                                  .unit = "× spacing",
                                  .minimum = 0.5,
                                  .maximum = 4.0,
-                                 .defaultValue = 1.0,
                                  .help = "Radius of the sphere each particle adds to the level "
                                          "set; at least 1.5 voxels. Larger joins more spray into "
                                          "sheets."},
@@ -53,7 +50,6 @@ SchemaSection surfaceMeshSection() {
                                  .label = "Smoothing passes",
                                  .minimum = 0,
                                  .maximum = 50,
-                                 .defaultValue = 4LL,
                                  .help = "Mean-curvature passes that flatten the particles' "
                                          "bumps. The volume is restored afterwards, so more "
                                          "passes round the water off without shrinking it."},
@@ -63,7 +59,6 @@ SchemaSection surfaceMeshSection() {
                                  .unit = "× spacing",
                                  .minimum = 0.0,
                                  .maximum = 2.0,
-                                 .defaultValue = 1.0,
                                  .help = "Polygons with every corner closer than this to a body, "
                                          "the tank or a bubble are left out (paper Fig. 2b): "
                                          "there the other object's own surface is rendered. "
@@ -83,7 +78,6 @@ SchemaSection bubbleMeshSection() {
                                     .label = "Subdivisions",
                                     .minimum = 0,
                                     .maximum = 6,
-                                    .defaultValue = 2LL,
                                     .help = "Of the icosphere each bubble is made from: 20·4ⁿ "
                                             "triangles (2: 320)."},
                                    &BubbleMeshSettings::subdivisions),
@@ -91,7 +85,6 @@ SchemaSection bubbleMeshSection() {
                                     .label = "Wobble magnitude k",
                                     .minimum = 0.0,
                                     .maximum = 0.5,
-                                    .defaultValue = 0.1,
                                     .help = "Largest change of the cross radius, as a share of "
                                             "the radius (eq. 10; k ≪ 1). 0 keeps bubbles "
                                             "spherical."},
@@ -101,7 +94,6 @@ SchemaSection bubbleMeshSection() {
                                     .unit = "s",
                                     .minimum = 0.01,
                                     .maximum = 10.0,
-                                    .defaultValue = 0.5,
                                     .help = "How long a bubble wobbles after its birth; the "
                                             "wobble dies away as (t/T − 1)² (eq. 10)."},
                                    &BubbleMeshSettings::duration),
@@ -109,7 +101,6 @@ SchemaSection bubbleMeshSection() {
                                     .label = "Wobble cycles n",
                                     .minimum = 0.5,
                                     .maximum = 20.0,
-                                    .defaultValue = 3.0,
                                     .help = "Oscillations within the duration (eq. 10)."},
                                    &BubbleMeshSettings::cycles),
         });
@@ -126,7 +117,6 @@ SchemaSection subgridBubblesSection() {
                                  .label = "Bubbles per bubble",
                                  .minimum = 0,
                                  .maximum = 126,
-                                 .defaultValue = 24LL,
                                  .help = "Shed by a new bubble entirely in air; one in water "
                                          "sheds in proportion to its surface in air. 0 sheds "
                                          "none."},
@@ -136,7 +126,6 @@ SchemaSection subgridBubblesSection() {
                                  .unit = "× parent radius",
                                  .minimum = 0.01,
                                  .maximum = 0.5,
-                                 .defaultValue = 0.15,
                                  .help = "Radii are drawn between the smallest and the largest."},
                                 &SubgridBubbleSettings::minSize),
             bind<SubgridAccess>({.key = "max_size",
@@ -144,14 +133,12 @@ SchemaSection subgridBubblesSection() {
                                  .unit = "× parent radius",
                                  .minimum = 0.01,
                                  .maximum = 0.5,
-                                 .defaultValue = 0.35,
                                  .help = "At least the smallest radius."},
                                 &SubgridBubbleSettings::maxSize),
             bind<SubgridAccess>({.key = "generations",
                                  .label = "Generations",
                                  .minimum = 1,
                                  .maximum = 4,
-                                 .defaultValue = 1LL,
                                  .help = "1: only trapped bubbles shed. Each more lets the last "
                                          "generation shed smaller bubbles around itself."},
                                 &SubgridBubbleSettings::generations),
@@ -159,7 +146,6 @@ SchemaSection subgridBubblesSection() {
                                  .label = "Children per bubble",
                                  .minimum = 0,
                                  .maximum = 126,
-                                 .defaultValue = 3LL,
                                  .help = "Shed by each sub-grid bubble of a generation before "
                                          "the last."},
                                 &SubgridBubbleSettings::childrenPerBubble),
@@ -168,14 +154,12 @@ SchemaSection subgridBubblesSection() {
                                  .unit = "s",
                                  .minimum = 0.01,
                                  .maximum = 60.0,
-                                 .defaultValue = 3.0,
                                  .help = "Older sub-grid bubbles are deleted even under water."},
                                 &SubgridBubbleSettings::lifetime),
             bind<SubgridAccess>({.key = "substeps",
                                  .label = "Steps per frame",
                                  .minimum = 1,
                                  .maximum = 32,
-                                 .defaultValue = 4LL,
                                  .help = "Midpoint (RK2) steps between two frames. More follow "
                                          "fast, curling water more closely."},
                                 &SubgridBubbleSettings::substeps),

@@ -46,7 +46,6 @@ SchemaSection topLevelSection() {
                                .label = "Scene name",
                                .minimum = 1,
                                .maximum = kMaxNameLength,
-                               .defaultValue = std::string("Untitled"),
                                .help = "Shown in the editor's title bar and in the cache."},
                               &Scene::name),
          bind<TopLevelAccess>(
@@ -54,7 +53,6 @@ SchemaSection topLevelSection() {
               .label = "Random seed",
               .minimum = 0,
               .maximum = kMaxSeed,
-              .defaultValue = 1LL,
               .help = "Seeds every random choice, so that a bake can be repeated exactly."},
              &Scene::seed)});
 }
@@ -67,7 +65,6 @@ SchemaSection solverSection() {
                              .unit = "m",
                              .minimum = 0.001,
                              .maximum = 1.0,
-                             .defaultValue = 0.02,
                              .help = "Initial distance between water particles; halving it "
                                      "gives 8 times as many particles."},
                             &SolverSettings::particleSpacing),
@@ -75,7 +72,6 @@ SchemaSection solverSection() {
                              .label = "Support factor",
                              .minimum = 1.5,
                              .maximum = 3.0,
-                             .defaultValue = 2.0,
                              .help = "Kernel support radius as a multiple of the particle "
                                      "spacing."},
                             &SolverSettings::supportFactor),
@@ -84,7 +80,6 @@ SchemaSection solverSection() {
                              .unit = "kg/m³",
                              .minimum = 100.0,
                              .maximum = 20000.0,
-                             .defaultValue = 1000.0,
                              .help = "Density of the liquid at rest (water: 1000)."},
                             &SolverSettings::restDensity),
          bind<SolverAccess>({.key = "max_speed",
@@ -92,7 +87,6 @@ SchemaSection solverSection() {
                              .unit = "m/s",
                              .minimum = 0.1,
                              .maximum = 200.0,
-                             .defaultValue = 10.0,
                              .help = "Largest speed expected in the flow; the speed of sound is "
                                      "10 times this, which keeps density errors near 1 %."},
                             &SolverSettings::maxSpeed),
@@ -100,14 +94,12 @@ SchemaSection solverSection() {
                              .label = "Viscosity α",
                              .minimum = 0.0,
                              .maximum = 1.0,
-                             .defaultValue = 0.1,
                              .help = "Monaghan artificial viscosity between water particles."},
                             &SolverSettings::viscosityAlpha),
          bind<SolverAccess>({.key = "wall_viscosity",
                              .label = "Wall viscosity",
                              .minimum = 0.0,
                              .maximum = 1.0,
-                             .defaultValue = 0.05,
                              .help = "Artificial viscosity against solid walls, i.e. wall "
                                      "friction."},
                             &SolverSettings::wallViscosity),
@@ -115,7 +107,6 @@ SchemaSection solverSection() {
                              .label = "Wall restitution",
                              .minimum = 0.0,
                              .maximum = 1.0,
-                             .defaultValue = 0.0,
                              .help = "Share of the normal speed kept when water hits a wall "
                                      "(0 = no bounce)."},
                             &SolverSettings::wallRestitution),
@@ -123,7 +114,6 @@ SchemaSection solverSection() {
                              .label = "CFL factor",
                              .minimum = 0.05,
                              .maximum = 0.6,
-                             .defaultValue = 0.3,
                              .help = "λ in the time step Δt = λ h / (c + |v|max); smaller is "
                                      "steadier and slower."},
                             &SolverSettings::cflFactor),
@@ -132,7 +122,6 @@ SchemaSection solverSection() {
                              .unit = "steps",
                              .minimum = 0,
                              .maximum = 10000,
-                             .defaultValue = 30LL,
                              .help = "Steps between Shepard density re-initialisations (0 = "
                                      "never)."},
                             &SolverSettings::shepardInterval),
@@ -140,7 +129,6 @@ SchemaSection solverSection() {
                              .label = "Maximum density error",
                              .minimum = 0.01,
                              .maximum = 10.0,
-                             .defaultValue = 0.2,
                              .help = "The bake stops as blown up when |ρ/ρ₀ − 1| exceeds this "
                                      "anywhere."},
                             &SolverSettings::maxDensityError),
@@ -149,7 +137,6 @@ SchemaSection solverSection() {
                              .unit = "m/s²",
                              .minimum = -100.0,
                              .maximum = 100.0,
-                             .defaultValue = Vec3d(0.0, -9.81, 0.0),
                              .help = "Gravitational acceleration; y is up."},
                             &SolverSettings::gravity)});
 }
@@ -164,14 +151,12 @@ SchemaSection framesSection() {
                              .unit = "1/s",
                              .minimum = 1.0,
                              .maximum = 240.0,
-                             .defaultValue = 30.0,
                              .help = "Frames per second of simulated time."},
                             &FrameSettings::fps),
          bind<FramesAccess>({.key = "end_frame",
                              .label = "End frame",
                              .minimum = 2,
                              .maximum = 100000,
-                             .defaultValue = 60LL,
                              .help = "Last frame to bake."},
                             &FrameSettings::endFrame)});
 }
@@ -186,7 +171,6 @@ SchemaSection containerSection() {
                                 .unit = "m",
                                 .minimum = -kMaxCoordinate,
                                 .maximum = kMaxCoordinate,
-                                .defaultValue = Vec3d(0.0, 0.0, 0.0),
                                 .help = "Inside corner with the smallest x, y and z (the floor)."},
                                &ContainerSettings::min),
          bind<ContainerAccess>({.key = "max",
@@ -194,7 +178,6 @@ SchemaSection containerSection() {
                                 .unit = "m",
                                 .minimum = -kMaxCoordinate,
                                 .maximum = kMaxCoordinate,
-                                .defaultValue = Vec3d(1.0, 1.0, 1.0),
                                 .help = "Inside corner with the largest x, y and z (y is the "
                                         "rim)."},
                                &ContainerSettings::max),
@@ -203,7 +186,6 @@ SchemaSection containerSection() {
                                 .unit = "m",
                                 .minimum = 0.0,
                                 .maximum = 100.0,
-                                .defaultValue = 0.5,
                                 .help = "Height above the rim that still belongs to the domain, "
                                         "for splashes."},
                                &ContainerSettings::headroom)});
@@ -217,7 +199,6 @@ SchemaSection fluidBlocksSection() {
                                  .label = "Name",
                                  .minimum = 1,
                                  .maximum = kMaxNameLength,
-                                 .defaultValue = std::string("Water"),
                                  .help = "Shown in the scene tree and in messages."},
                                 &FluidBlock::name),
          bind<FluidBlockAccess>({.key = "min",
@@ -225,7 +206,6 @@ SchemaSection fluidBlocksSection() {
                                  .unit = "m",
                                  .minimum = -kMaxCoordinate,
                                  .maximum = kMaxCoordinate,
-                                 .defaultValue = Vec3d(0.0, 0.0, 0.0),
                                  .help = "Corner with the smallest x, y and z."},
                                 &FluidBlock::min),
          bind<FluidBlockAccess>({.key = "max",
@@ -233,7 +213,6 @@ SchemaSection fluidBlocksSection() {
                                  .unit = "m",
                                  .minimum = -kMaxCoordinate,
                                  .maximum = kMaxCoordinate,
-                                 .defaultValue = Vec3d(0.5, 0.5, 0.5),
                                  .help = "Corner with the largest x, y and z."},
                                 &FluidBlock::max),
          bind<FluidBlockAccess>({.key = "initial_velocity",
@@ -241,7 +220,6 @@ SchemaSection fluidBlocksSection() {
                                  .unit = "m/s",
                                  .minimum = -100.0,
                                  .maximum = 100.0,
-                                 .defaultValue = Vec3d(0.0, 0.0, 0.0),
                                  .help = "Velocity of every particle of the block at t = 0."},
                                 &FluidBlock::initialVelocity)});
 }
@@ -253,7 +231,6 @@ SchemaSection obstaclesSection() {
                                .label = "Name",
                                .minimum = 1,
                                .maximum = kMaxNameLength,
-                               .defaultValue = std::string("Obstacle"),
                                .help = "Shown in the scene tree and in messages."},
                               &BoxObstacle::name),
          obstacleShape(),
@@ -262,7 +239,6 @@ SchemaSection obstaclesSection() {
                                .unit = "m",
                                .minimum = -kMaxCoordinate,
                                .maximum = kMaxCoordinate,
-                               .defaultValue = Vec3d(0.5, 0.25, 0.5),
                                .help = "Centre of the box."},
                               &BoxObstacle::center),
          bind<ObstacleAccess>({.key = "size",
@@ -271,7 +247,6 @@ SchemaSection obstaclesSection() {
                                .minimum = 0.0,
                                .maximum = kMaxCoordinate,
                                .minimumExclusive = true,
-                               .defaultValue = Vec3d(0.2, 0.5, 0.2),
                                .help = "Edge lengths of the box along x, y and z."},
                               &BoxObstacle::size)});
 }
@@ -285,12 +260,10 @@ SchemaSection emittersSection() {
                               .label = "Name",
                               .minimum = 1,
                               .maximum = kMaxNameLength,
-                              .defaultValue = std::string("Inflow"),
                               .help = "Shown in the scene tree and in messages."},
                              &InflowEmitterSettings::name),
          bind<EmitterAccess>({.key = "shape",
                               .label = "Shape",
-                              .defaultValue = std::string("disc"),
                               .help = "Nozzle cross-section: a disc (radius) or a rectangle "
                                       "(width × height).",
                               .choices = {"disc", "rectangle"}},
@@ -300,14 +273,12 @@ SchemaSection emittersSection() {
                               .unit = "m",
                               .minimum = -kMaxCoordinate,
                               .maximum = kMaxCoordinate,
-                              .defaultValue = Vec3d(0.5, 0.8, 0.5),
                               .help = "Centre of the nozzle's exit plane."},
                              &InflowEmitterSettings::position),
          bind<EmitterAccess>({.key = "direction",
                               .label = "Direction",
                               .minimum = -1000.0,
                               .maximum = 1000.0,
-                              .defaultValue = Vec3d(0.0, -1.0, 0.0),
                               .help = "Direction of the jet; any length but zero."},
                              &InflowEmitterSettings::direction),
          bind<EmitterAccess>({.key = "radius",
@@ -316,7 +287,6 @@ SchemaSection emittersSection() {
                               .minimum = 0.0,
                               .maximum = 100.0,
                               .minimumExclusive = true,
-                              .defaultValue = 0.05,
                               .help = "Radius of a disc nozzle."},
                              &InflowEmitterSettings::radius),
          bind<EmitterAccess>({.key = "width",
@@ -325,7 +295,6 @@ SchemaSection emittersSection() {
                               .minimum = 0.0,
                               .maximum = 100.0,
                               .minimumExclusive = true,
-                              .defaultValue = 0.1,
                               .help = "Side of a rectangular nozzle along the horizontal "
                                       "perpendicular of the direction (x for a vertical jet)."},
                              &InflowEmitterSettings::width),
@@ -335,7 +304,6 @@ SchemaSection emittersSection() {
                               .minimum = 0.0,
                               .maximum = 100.0,
                               .minimumExclusive = true,
-                              .defaultValue = 0.1,
                               .help = "Side of a rectangular nozzle along the other "
                                       "perpendicular (z for a vertical jet)."},
                              &InflowEmitterSettings::height),
@@ -345,7 +313,6 @@ SchemaSection emittersSection() {
                               .minimum = 0.0,
                               .maximum = 200.0,
                               .minimumExclusive = true,
-                              .defaultValue = 1.0,
                               .help = "Speed of the emitted water; at most solver.max_speed."},
                              &InflowEmitterSettings::speed),
          bind<EmitterAccess>({.key = "start_time",
@@ -353,7 +320,6 @@ SchemaSection emittersSection() {
                               .unit = "s",
                               .minimum = 0.0,
                               .maximum = 100000.0,
-                              .defaultValue = 0.0,
                               .help = "Simulated time of the first layer."},
                              &InflowEmitterSettings::startTime),
          bind<EmitterAccess>({.key = "stop_time",
@@ -361,14 +327,12 @@ SchemaSection emittersSection() {
                               .unit = "s",
                               .minimum = 0.0,
                               .maximum = 100000.0,
-                              .defaultValue = 1.0,
                               .help = "Nothing is emitted from this simulated time on."},
                              &InflowEmitterSettings::stopTime),
          bind<EmitterAccess>({.key = "max_particles",
                               .label = "Particle budget",
                               .minimum = 1,
                               .maximum = 20000000,
-                              .defaultValue = 100000LL,
                               .help = "Most particles this emitter creates; it stops at the last "
                                       "whole layer that fits."},
                              &InflowEmitterSettings::maxParticles)});

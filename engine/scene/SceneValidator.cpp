@@ -20,6 +20,18 @@ std::string number(double value) {
     return ParameterCodec::formatNumber(value);
 }
 
+//! A parameter's dotted key for messages, from its declaration ("solver.max_speed").
+template <class Owner, class Field>
+std::string key(Field Owner::*member) {
+    return SceneSchema::keyOf(member);
+}
+
+//! A parameter's own key, for messages that name its element first ("stop_time").
+template <class Owner, class Field>
+const std::string& name(Field Owner::*member) {
+    return SceneSchema::nameOf(member);
+}
+
 std::string blockLabel(const char* section, std::size_t index, const std::string& name) {
     return std::string(section) + "[" + std::to_string(index) + "] (" +
            ParameterCodec::formatValue(name) + ")";
@@ -123,7 +135,7 @@ private:
                     error(label + ": min." + a + " = " + number(block.min[axis]) +
                           " must be less than max." + a + " = " + number(block.max[axis]));
                 else if (block.max[axis] - block.min[axis] < spacing)
-                    warning(label + " is thinner than solver.particle_spacing = " +
+                    warning(label + " is thinner than " + key(&SolverSettings::particleSpacing) + " = " +
                             number(spacing) + " m along " + a + "; it may hold no particles");
             }
             // The domain, not just the tank: water may start above the rim and fall in.
@@ -146,13 +158,16 @@ private:
             const InflowEmitterSettings& emitter = scene_.emitters[i];
             const std::string label = blockLabel("emitters", i, emitter.name);
             if (emitter.stopTime <= emitter.startTime)
-                error(label + ": stop_time = " + number(emitter.stopTime) +
-                      " s must be later than start_time = " + number(emitter.startTime) + " s");
+                error(label + ": " + name(&InflowEmitterSettings::stopTime) + " = " +
+                      number(emitter.stopTime) + " s must be later than " +
+                      name(&InflowEmitterSettings::startTime) + " = " + number(emitter.startTime) +
+                      " s");
             if (emitter.speed > solver.maxSpeed + kTolerance)
-                error(label + ": speed = " + number(emitter.speed) +
-                      " m/s exceeds solver.max_speed = " + number(solver.maxSpeed) +
-                      " m/s; the speed of sound (10 × max_speed) would be too slow for the jet. "
-                      "Raise solver.max_speed or lower the speed");
+                error(label + ": " + name(&InflowEmitterSettings::speed) + " = " +
+                      number(emitter.speed) + " m/s exceeds " + key(&SolverSettings::maxSpeed) +
+                      " = " + number(solver.maxSpeed) + " m/s; the speed of sound (10 × " +
+                      name(&SolverSettings::maxSpeed) + ") would be too slow for the jet. Raise " +
+                      key(&SolverSettings::maxSpeed) + " or lower the speed");
             if (emitter.direction.norm() < kTolerance) {
                 error(label + ": direction is zero; give the jet a direction, e.g. [0, -1, 0]");
                 continue;
@@ -184,10 +199,10 @@ private:
         char text[256];
         std::snprintf(text, sizeof text,
                       "the fluid blocks%s hold about %.1f million particles at "
-                      "solver.particle_spacing = %s m; the limit is %.0f million. Use a spacing of "
+                      "%s = %s m; the limit is %.0f million. Use a spacing of "
                       "at least %.2g m or smaller fluid blocks",
                       budgets > 0.0 ? " and emitter budgets" : "", particles / 1e6,
-                      number(spacing).c_str(), SceneValidator::kMaxParticles / 1e6,
+                      key(&SolverSettings::particleSpacing).c_str(), number(spacing).c_str(), SceneValidator::kMaxParticles / 1e6,
                       std::cbrt(volume / std::max(1.0, SceneValidator::kMaxParticles - budgets)) *
                           1.005);
         error(text);
@@ -215,18 +230,18 @@ private:
         for (std::size_t i = 0; i < scene_.bodies.size(); ++i) {
             const RigidBodySettings& body = scene_.bodies[i];
             const std::string label = blockLabel("bodies", i, body.name);
-            const auto tooSmall = [&](const std::string& key, double value) {
+            const auto tooSmall = [&](const std::string& field, double value) {
                 if (value < spacing - kTolerance)
-                    error(label + "." + key + " = " + number(value) +
-                          " m is less than solver.particle_spacing = " + number(spacing) +
+                    error(label + "." + field + " = " + number(value) + " m is less than " +
+                          key(&SolverSettings::particleSpacing) + " = " + number(spacing) +
                           " m; the water cannot feel a smaller solid");
             };
             if (body.shape == "box")
-                tooSmall("size", body.size.minCoeff());
+                tooSmall(name(&RigidBodySettings::size), body.size.minCoeff());
             if (body.shape == "sphere" || body.shape == "cylinder")
-                tooSmall("radius", body.radius);
+                tooSmall(name(&RigidBodySettings::radius), body.radius);
             if (body.shape == "cylinder")
-                tooSmall("height", body.height);
+                tooSmall(name(&RigidBodySettings::height), body.height);
             if (body.shape == "mesh" && body.mesh.empty())
                 error(label + ".mesh is empty; shape \"mesh\" needs a mesh file");
         }
@@ -236,31 +251,31 @@ private:
         const BubbleSettings& bubbles = scene_.bubbles;
         // Paper §3.3.2: ε₁ < ε₂ ≤ 0; equal values (−1 for no interaction at all) are allowed.
         if (bubbles.approachRestitution > bubbles.overlapRestitution)
-            error("bubbles.approach_restitution = " + number(bubbles.approachRestitution) +
-                  " exceeds bubbles.overlap_restitution = " + number(bubbles.overlapRestitution) +
+            error(key(&BubbleSettings::approachRestitution) + " = " +
+                  number(bubbles.approachRestitution) + " exceeds " +
+                  key(&BubbleSettings::overlapRestitution) + " = " +
+                  number(bubbles.overlapRestitution) +
                   "; approaching bubbles take at most the overlapping ones' restitution "
                   "(ε₁ ≤ ε₂ ≤ 0)");
         if (bubbles.enabled && bubbles.maxRiseSpeed > scene_.solver.maxSpeed)
-            error("bubbles.max_rise_speed = " + number(bubbles.maxRiseSpeed) +
-                  " m/s exceeds solver.max_speed = " + number(scene_.solver.maxSpeed) +
-                  " m/s; raise solver.max_speed or lower the cap");
+            error(key(&BubbleSettings::maxRiseSpeed) + " = " + number(bubbles.maxRiseSpeed) +
+                  " m/s exceeds " + key(&SolverSettings::maxSpeed) + " = " +
+                  number(scene_.solver.maxSpeed) + " m/s; raise " +
+                  key(&SolverSettings::maxSpeed) + " or lower the cap");
     }
 
     void checkSurfaceMesh() {
-        const SurfaceMeshSettings& surface = scene_.surfaceMesh;
-        // OpenVDB leaves out spheres narrower than 1.5 voxels: the water would have holes.
-        if (surface.particleRadius < 1.5 * surface.voxelSize)
-            error(
-                "surface_mesh.particle_radius = " + number(surface.particleRadius) +
-                " is less than 1.5 × surface_mesh.voxel_size = " + number(1.5 * surface.voxelSize) +
-                "; particles narrower than 1.5 voxels would leave holes in the water mesh");
+        if (const std::string problem = SceneValidator::surfaceMeshRule(scene_.surfaceMesh);
+            !problem.empty())
+            error(problem);
     }
 
     void checkSubgridBubbles() {
         const SubgridBubbleSettings& subgrid = scene_.subgridBubbles;
         if (subgrid.minSize > subgrid.maxSize)
-            error("subgrid_bubbles.min_size = " + number(subgrid.minSize) +
-                  " exceeds subgrid_bubbles.max_size = " + number(subgrid.maxSize) +
+            error(key(&SubgridBubbleSettings::minSize) + " = " + number(subgrid.minSize) +
+                  " exceeds " + key(&SubgridBubbleSettings::maxSize) + " = " +
+                  number(subgrid.maxSize) +
                   "; the radii are drawn between the two");
     }
 
@@ -307,6 +322,18 @@ private:
 };
 
 } // namespace
+
+std::string SceneValidator::surfaceMeshRule(const SurfaceMeshSettings& surface) {
+    // OpenVDB leaves out spheres narrower than 1.5 voxels: the water would have holes.
+    constexpr double kMinRadiusInVoxels = 1.5;
+    if (surface.particleRadius >= kMinRadiusInVoxels * surface.voxelSize)
+        return {};
+    return key(&SurfaceMeshSettings::particleRadius) + " = " + number(surface.particleRadius) +
+           " is less than " + number(kMinRadiusInVoxels) + " × " +
+           key(&SurfaceMeshSettings::voxelSize) + " = " +
+           number(kMinRadiusInVoxels * surface.voxelSize) + "; particles narrower than " +
+           number(kMinRadiusInVoxels) + " voxels would leave holes in the water mesh";
+}
 
 SceneIssues SceneValidator::check(const Scene& scene) {
     return Checker(scene).run();

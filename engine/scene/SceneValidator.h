@@ -25,6 +25,10 @@ public:
     //! with Scene::sourcePath (or "scene") and name the JSON paths involved.
     static SceneIssues check(const Scene& scene);
 
+    //! The rule between the surface mesh's sizes (particle radius against the voxel size): its
+    //! complaint, or an empty string. The post stage checks settings it is given with it too.
+    static std::string surfaceMeshRule(const SurfaceMeshSettings& surface);
+
     //! The cross-field rules, one sentence each, for docs/SCENE_FORMAT.md; with those of
     //! BodyPlacementCheck (a usable mesh, bodies inside the domain, overlaps at t = 0), which
     //! SceneCheck runs after these.

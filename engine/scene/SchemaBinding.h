@@ -121,9 +121,13 @@ ParameterKind kindOf(const ParameterDeclaration& declaration) {
         return ParameterKind::Int;
 }
 
+//! The declaration bound to `member`. Its default is the field's own in-class default
+//! (scene/Scene.h): one place for every default, which the JSON reader, the docs and the editor
+//! read from here.
 template <class Access, class Owner, class Field>
 BoundParameter bind(ParameterDeclaration declaration, Field Owner::*member) {
     declaration.kind = kindOf<Field>(declaration);
+    declaration.defaultValue = toValue(Owner{}.*member);
     const std::string key = declaration.key;
     return {std::move(declaration),
             [member](const Scene& scene, std::size_t element) {
@@ -131,7 +135,8 @@ BoundParameter bind(ParameterDeclaration declaration, Field Owner::*member) {
             },
             [member, key](Scene& scene, std::size_t element, const ParameterValue& value) {
                 assign(Access::of(scene, element).*member, value, key);
-            }};
+            },
+            member};
 }
 
 // --- The sections. ----------------------------------------------------------------------------

@@ -1,6 +1,7 @@
 #include "sim/RigidWorld.h"
 
 #include "core/Error.h"
+#include "scene/SceneSchema.h"
 
 #include <algorithm>
 
@@ -39,7 +40,8 @@ void RigidWorld::place(SimulationState& state) {
                         "; the frame was baked from another scene");
     if (!state.bubbles.empty() && !bubbles_)
         throw Error(ErrorKind::CacheCorrupt,
-                    "the state holds bubbles but the scene has bubbles.enabled = false");
+                    "the state holds bubbles but the scene has " +
+                        SceneSchema::keyOf(&BubbleSettings::enabled) + " = false");
     for (std::size_t k = 0; k < state.bodies.size(); ++k)
         bodies_[sceneryCount_ + k].setState(state.bodies[k]);
     if (bubbles_)

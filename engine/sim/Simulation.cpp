@@ -2,6 +2,7 @@
 
 #include "core/Error.h"
 #include "core/RunBeside.h"
+#include "scene/SceneSchema.h"
 #include "sim/SceneSetup.h"
 #include "sph/WcsphSolver.h"
 
@@ -257,25 +258,29 @@ void Simulation::checkHealth(const StepReport& report, double timeToFrameEnd, in
                              std::size_t lost, std::size_t particlesAtStart) const {
     const std::string where =
         "frame " + std::to_string(frame) + " (t = " + std::to_string(state_.time) + " s): ";
+    const std::string cflFactor = SceneSchema::keyOf(&SolverSettings::cflFactor);
+    const std::string maxSpeed = SceneSchema::keyOf(&SolverSettings::maxSpeed);
     if (report.nonFinite)
         throw Error(ErrorKind::SimulationBlowUp,
                     where + "the simulation produced NaN or infinite values. Likely cause: a time "
-                            "step too large for the forces (lower solver.cfl_factor) or bodies "
-                            "overlapping the water at t = 0.");
+                            "step too large for the forces (lower " +
+                        cflFactor + ") or bodies overlapping the water at t = 0.");
     if (report.maxDensityDeviation > scene_.solver.maxDensityError)
-        throw Error(
-            ErrorKind::SimulationBlowUp,
-            where + "density error " + percent(report.maxDensityDeviation) +
-                " exceeds solver.max_density_error (" + percent(scene_.solver.maxDensityError) +
-                "). Likely cause: the water " + "moves at " + std::to_string(report.maxSpeed) +
-                " m/s, too fast for solver.max_speed = " + std::to_string(scene_.solver.maxSpeed) +
-                " m/s (raise it), or solver.cfl_factor is too large.");
+        throw Error(ErrorKind::SimulationBlowUp,
+                    where + "density error " + percent(report.maxDensityDeviation) + " exceeds " +
+                        SceneSchema::keyOf(&SolverSettings::maxDensityError) + " (" +
+                        percent(scene_.solver.maxDensityError) + "). Likely cause: the water " +
+                        "moves at " + std::to_string(report.maxSpeed) + " m/s, too fast for " +
+                        maxSpeed + " = " + std::to_string(scene_.solver.maxSpeed) +
+                        " m/s (raise it), or " + cflFactor + " is too large.");
     if (lost > std::max<std::size_t>(10, std::size_t(kMaxLostShare * particlesAtStart)))
         throw Error(ErrorKind::SimulationBlowUp,
                     where + std::to_string(lost) +
                         " particles left the domain in one frame. Likely cause: the water "
-                        "exploded (lower solver.cfl_factor, raise solver.max_speed) or the "
-                        "container's headroom is too small for the splash.");
+                        "exploded (lower " +
+                        cflFactor + ", raise " + maxSpeed +
+                        ") or " + SceneSchema::keyOf(&ContainerSettings::headroom) +
+                        " is too small for the splash.");
     // A step shortened to land on the frame time may be short; one the forces made short is not.
     if (report.timeStep < kMinTimeStep && report.timeStep < 0.5 * timeToFrameEnd)
         throw Error(ErrorKind::SimulationBlowUp,

@@ -5,26 +5,25 @@
 #include "cache/FrameCache.h"
 #include "core/Error.h"
 #include "scene/SceneJson.h"
+#include "support/SceneBuilder.h"
 #include "support/TestMain.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
 
 using namespace airtrap;
+using airtrap::test::SceneBuilder;
 
 namespace {
 
 Scene smallSplash() {
-    Scene scene;
-    scene.solver.particleSpacing = 0.04;
-    scene.solver.maxSpeed = 4.0;
-    scene.frames.fps = 60.0;
-    scene.frames.endFrame = 5;
-    scene.container.max = Vec3d(0.6, 0.5, 0.24);
-    FluidBlock water;
-    water.max = Vec3d(0.24, 0.32, 0.24);
-    scene.fluidBlocks.push_back(water);
-    return scene;
+    return SceneBuilder()
+        .spacing(0.04)
+        .maxSpeed(4.0)
+        .frames(60.0, 5)
+        .tank({0.6, 0.5, 0.24})
+        .water({0.0, 0.0, 0.0}, {0.24, 0.32, 0.24})
+        .build();
 }
 
 void bake(const Scene& scene, const std::string& dir, bool resume, int lastFrame,

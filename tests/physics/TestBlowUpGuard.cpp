@@ -5,26 +5,25 @@
 #include "bake/Baker.h"
 #include "cache/FrameCache.h"
 #include "core/Error.h"
+#include "support/SceneBuilder.h"
 #include "support/TestMain.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
 
 using namespace airtrap;
+using airtrap::test::SceneBuilder;
 
 namespace {
 
 Scene collapsingColumn() {
-    Scene scene;
-    scene.solver.particleSpacing = 0.025;
-    scene.solver.maxSpeed = 3.0;
-    scene.frames.fps = 30.0;
-    scene.frames.endFrame = 20;
-    scene.container.max = Vec3d(0.6, 0.4, 0.2);
-    FluidBlock water;
-    water.max = Vec3d(0.15, 0.3, 0.2);
-    scene.fluidBlocks.push_back(water);
-    return scene;
+    return SceneBuilder()
+        .spacing(0.025)
+        .maxSpeed(3.0)
+        .frames(30.0, 20)
+        .tank({0.6, 0.4, 0.2})
+        .water({0.0, 0.0, 0.0}, {0.15, 0.3, 0.2})
+        .build();
 }
 
 } // namespace

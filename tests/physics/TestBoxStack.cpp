@@ -3,26 +3,25 @@
 // no tipping — through the same impulses as the water's contacts. A little water sits in a far
 // corner because a scene needs some.
 #include "sim/Simulation.h"
+#include "support/SceneBuilder.h"
 #include "support/TestMain.h"
 
 #include <QtTest>
 
 using namespace airtrap;
+using airtrap::test::SceneBuilder;
 
 class TestBoxStack : public QObject {
     Q_OBJECT
 
 private Q_SLOTS:
     void threeBoxesComeToRest() {
-        Scene scene;
-        scene.solver.particleSpacing = 0.02;
-        scene.solver.maxSpeed = 2.0;
-        scene.frames.fps = 20.0;
-        scene.frames.endFrame = 1 + 30; // 1.5 s
-        scene.container.max = Vec3d(0.6, 0.6, 0.6);
-        FluidBlock puddle;
-        puddle.max = Vec3d(0.06, 0.04, 0.06);
-        scene.fluidBlocks.push_back(puddle);
+        SceneBuilder builder;
+        builder.spacing(0.02)
+            .maxSpeed(2.0)
+            .frames(20.0, 1 + 30) // 1.5 s
+            .tank({0.6, 0.6, 0.6})
+            .water({0.0, 0.0, 0.0}, {0.06, 0.04, 0.06});
         constexpr double kEdge = 0.1;
         for (int k = 0; k < 3; ++k) {
             RigidBodySettings box;
@@ -31,8 +30,9 @@ private Q_SLOTS:
             box.density = 600.0;
             // Each starts 1 cm above where it will rest, so each lands on the one below.
             box.position = Vec3d(0.35, (k + 0.5) * kEdge + 0.01 * (k + 1), 0.35);
-            scene.bodies.push_back(box);
+            builder.body(box);
         }
+        const Scene scene = builder.build();
 
         Simulation simulation(scene);
         Interrupter interrupter;

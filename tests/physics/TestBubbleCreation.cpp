@@ -7,27 +7,26 @@
 // every few steps (bubbles.pocket_interval) and find it at its size.
 #include "BubbleTestSupport.h"
 #include "core/Interrupter.h"
+#include "support/SceneBuilder.h"
 #include "support/TestMain.h"
 
 #include <QtTest>
 
 using namespace airtrap;
+using airtrap::test::SceneBuilder;
 
 namespace {
 
 constexpr double kSpacing = 0.02;
 
 Scene stillTank() {
-    Scene scene;
-    scene.solver.particleSpacing = kSpacing;
-    scene.solver.maxSpeed = 1.5;
-    scene.container.max = Vec3d(0.6, 0.6, 0.6);
-    scene.container.headroom = 0.1;
-    FluidBlock block;
-    block.max = Vec3d(0.6, 0.5, 0.6);
-    scene.fluidBlocks.push_back(block);
-    scene.bubbles.enabled = true;
-    return scene;
+    return SceneBuilder()
+        .spacing(kSpacing)
+        .maxSpeed(1.5)
+        .tank({0.6, 0.6, 0.6}, 0.1)
+        .water({0.0, 0.0, 0.0}, {0.6, 0.5, 0.6})
+        .bubbles()
+        .build();
 }
 
 //! The initial state of `scene` with the water inside each sphere (centre, radius) removed.

@@ -12,26 +12,25 @@
 // time so long that only the water's pressure lifts it.
 #include "BubbleTestSupport.h"
 #include "core/Interrupter.h"
+#include "support/SceneBuilder.h"
 #include "support/TestMain.h"
 
 #include <QtTest>
 
 using namespace airtrap;
+using airtrap::test::SceneBuilder;
 
 namespace {
 
 Scene stillTank(double depth) {
-    Scene scene;
-    scene.solver.particleSpacing = 0.02;
-    scene.solver.maxSpeed = 3.0;
-    scene.container.max = Vec3d(0.4, 0.6, 0.4);
-    scene.container.headroom = 0.2;
-    FluidBlock block;
-    block.max = Vec3d(0.4, depth, 0.4);
-    scene.fluidBlocks.push_back(block);
-    scene.frames.fps = 50.0;
-    scene.bubbles.enabled = true;
-    scene.bubbles.maxNewPerFrame = 0;
+    Scene scene = SceneBuilder()
+                      .spacing(0.02)
+                      .maxSpeed(3.0)
+                      .frames(50.0, FrameSettings{}.endFrame)
+                      .tank({0.4, 0.6, 0.4}, 0.2)
+                      .water({0.0, 0.0, 0.0}, {0.4, depth, 0.4})
+                      .bubbles(false)
+                      .build();
     scene.bubbles.maxAge = 1000.0;
     scene.bubbles.maxFloatingTime = 1000.0;
     scene.bubbles.maxOverlap = 1.0;

@@ -2,26 +2,24 @@
 // "Bubble rise"): after it has settled, its mean vertical speed lies within 15 % of min(2/9 g R²/ν,
 // cap).
 #include "BubbleTestSupport.h"
+#include "support/SceneBuilder.h"
 #include "support/TestMain.h"
 
 #include <QtTest>
 
 using namespace airtrap;
+using airtrap::test::SceneBuilder;
 
 namespace {
 
 Scene tallStillTank() {
-    Scene scene;
-    scene.solver.particleSpacing = 0.02;
-    scene.solver.maxSpeed = 1.5;
-    scene.container.max = Vec3d(0.4, 1.0, 0.4);
-    scene.container.headroom = 0.2;
-    FluidBlock block;
-    block.max = Vec3d(0.4, 0.9, 0.4);
-    scene.fluidBlocks.push_back(block);
-    scene.bubbles.enabled = true;
-    scene.bubbles.maxNewPerFrame = 0; // only the bubble placed by the test
-    return scene;
+    return SceneBuilder()
+        .spacing(0.02)
+        .maxSpeed(1.5)
+        .tank({0.4, 1.0, 0.4}, 0.2)
+        .water({0.0, 0.0, 0.0}, {0.4, 0.9, 0.4})
+        .bubbles(false) // only the bubble placed by the test
+        .build();
 }
 
 } // namespace

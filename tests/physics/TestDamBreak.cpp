@@ -3,6 +3,7 @@
 // experiments of Martin & Moyce (1952) and Koshizuka & Oka (1996), as digitised in PySPH's
 // db_exp_data.py (tests/data/dambreak_*.csv, read by readSeries()).
 #include "sim/Simulation.h"
+#include "support/SceneBuilder.h"
 #include "support/TestMain.h"
 
 #include <QtTest>
@@ -15,6 +16,7 @@
 #include <vector>
 
 using namespace airtrap;
+using airtrap::test::SceneBuilder;
 
 namespace {
 
@@ -63,20 +65,17 @@ constexpr double kSpacing = kWidth / 25; // 25 particles across the column
 constexpr double kGravity = 9.81;
 
 Scene damBreak() {
-    Scene scene;
-    scene.name = "dam break test";
-    scene.solver.particleSpacing = kSpacing;
-    scene.solver.maxSpeed = 3.0; // above the front's 2√(g·a) ≈ 2 m/s
-    // Frames every ΔT = 0.05.
-    scene.frames.fps = std::sqrt(2.0 * kGravity / kWidth) / 0.05;
-    scene.frames.endFrame = 1 + int(3.05 / 0.05);
     // A narrow flume, six particles deep: the flow is two-dimensional as in both experiments.
     const double depth = 6 * kSpacing;
-    scene.container.max = Vec3d(6 * kWidth, 3 * kWidth, depth);
-    scene.container.headroom = kWidth;
-    FluidBlock column;
-    column.max = Vec3d(kWidth, 2 * kWidth, depth);
-    scene.fluidBlocks.push_back(column);
+    Scene scene = SceneBuilder()
+                      .spacing(kSpacing)
+                      .maxSpeed(3.0) // above the front's 2√(g·a) ≈ 2 m/s
+                      // Frames every ΔT = 0.05.
+                      .frames(std::sqrt(2.0 * kGravity / kWidth) / 0.05, 1 + int(3.05 / 0.05))
+                      .tank({6 * kWidth, 3 * kWidth, depth}, kWidth)
+                      .water({0.0, 0.0, 0.0}, {kWidth, 2 * kWidth, depth})
+                      .build();
+    scene.name = "dam break test";
     return scene;
 }
 

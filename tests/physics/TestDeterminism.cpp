@@ -5,12 +5,14 @@
 #include "core/ThreadLimit.h"
 #include "scene/SceneJson.h"
 #include "sim/Simulation.h"
+#include "support/SceneBuilder.h"
 #include "support/TestMain.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
 
 using namespace airtrap;
+using airtrap::test::SceneBuilder;
 
 namespace {
 
@@ -18,24 +20,16 @@ namespace {
 //! moving at constant velocity, so every term of the step is active — the bodies' coupling and
 //! contacts included.
 Scene splash() {
-    Scene scene;
-    scene.solver.particleSpacing = 0.025;
-    scene.solver.maxSpeed = 4.0;
-    scene.solver.shepardInterval = 7; // several re-initialisations within the run
-    scene.frames.fps = 60.0;
-    scene.frames.endFrame = 7;
-    scene.container.max = Vec3d(0.5, 0.4, 0.3);
-    FluidBlock water;
-    water.min = Vec3d(0.0, 0.0, 0.0);
-    water.max = Vec3d(0.2, 0.25, 0.3);
-    water.initialVelocity = Vec3d(1.5, 0.0, 0.0);
-    scene.fluidBlocks.push_back(water);
+    SceneBuilder builder;
+    builder.spacing(0.025).maxSpeed(4.0).frames(60.0, 7).tank({0.5, 0.4, 0.3});
+    builder.water({0.0, 0.0, 0.0}, {0.2, 0.25, 0.3}, {1.5, 0.0, 0.0});
+    builder.scene().solver.shepardInterval = 7; // several re-initialisations within the run
     RigidBodySettings ball;
     ball.name = "Ball";
     ball.shape = "sphere";
     ball.radius = 0.05;
     ball.position = Vec3d(0.28, 0.05, 0.15); // on the floor, in the splash's way
-    scene.bodies.push_back(ball);
+    builder.body(ball);
     RigidBodySettings paddle;
     paddle.name = "Paddle";
     paddle.motion = "kinematic";
@@ -43,8 +37,7 @@ Scene splash() {
     paddle.position = Vec3d(0.42, 0.3, 0.15);
     paddle.linearVelocity = Vec3d(0.0, -0.5, 0.0);
     paddle.angularVelocity = Vec3d(0.0, 0.0, 2.0);
-    scene.bodies.push_back(paddle);
-    return scene;
+    return builder.body(paddle).build();
 }
 
 //! The splash with bubbles: two placed in the water at t = 0, and pockets searched every 3 steps.

@@ -2,6 +2,7 @@
 // leaves, the particle count stays constant and the water is at rest.
 #include "sim/Simulation.h"
 #include "sph/TaitEquationOfState.h"
+#include "support/SceneBuilder.h"
 #include "support/TestMain.h"
 
 #include <QtTest>
@@ -10,6 +11,7 @@
 #include <map>
 
 using namespace airtrap;
+using airtrap::test::SceneBuilder;
 
 namespace {
 
@@ -18,19 +20,15 @@ constexpr double kDepth = 0.4;        // m of water
 constexpr double kSettleSeconds = 1.0;
 
 Scene tank() {
-    Scene scene;
+    constexpr double kFps = 10.0;
+    Scene scene = SceneBuilder()
+                      .spacing(kTankSpacing)
+                      .maxSpeed(3.0) // c = 30 m/s: still 10× the speed of any wave in 0.4 m
+                      .frames(kFps, 1 + int(kSettleSeconds * kFps))
+                      .tank({0.4, 0.6, 0.4}, 0.2)
+                      .water({0.0, 0.0, 0.0}, {0.4, kDepth, 0.4})
+                      .build();
     scene.name = "hydrostatic test";
-    scene.solver.particleSpacing = kTankSpacing;
-    scene.solver.maxSpeed = 3.0; // c = 30 m/s: still 10× the speed of any wave in 0.4 m
-    scene.frames.fps = 10.0;
-    scene.frames.endFrame = 1 + int(kSettleSeconds * scene.frames.fps);
-    scene.container.min = Vec3d(0, 0, 0);
-    scene.container.max = Vec3d(0.4, 0.6, 0.4);
-    scene.container.headroom = 0.2;
-    FluidBlock water;
-    water.min = Vec3d(0, 0, 0);
-    water.max = Vec3d(0.4, kDepth, 0.4);
-    scene.fluidBlocks.push_back(water);
     return scene;
 }
 

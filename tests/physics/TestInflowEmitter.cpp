@@ -6,6 +6,7 @@
 #include "sim/InflowEmitter.h"
 #include "sim/SceneCheck.h"
 #include "sim/Simulation.h"
+#include "support/SceneBuilder.h"
 #include "support/TestMain.h"
 
 #include <QTemporaryDir>
@@ -14,6 +15,7 @@
 #include <numbers>
 
 using namespace airtrap;
+using airtrap::test::SceneBuilder;
 
 namespace {
 
@@ -40,17 +42,13 @@ std::size_t emitInSteps(const InflowEmitter& emitter, double from, double to, do
 
 //! A small tank with a shallow pool and a disc nozzle pouring straight down into it.
 Scene pouring() {
-    Scene scene;
-    scene.solver.particleSpacing = 0.02;
-    scene.solver.maxSpeed = 4.0;
-    scene.frames.fps = 30.0;
-    scene.frames.endFrame = 13; // 0.4 s: the jet reaches the pool after about 0.16 s
-    scene.container.max = Vec3d(0.3, 0.45, 0.3);
-    scene.container.headroom = 0.1;
-    FluidBlock pool;
-    pool.name = "Pool";
-    pool.max = Vec3d(0.3, 0.06, 0.3);
-    scene.fluidBlocks.push_back(pool);
+    Scene scene = SceneBuilder()
+                      .spacing(0.02)
+                      .maxSpeed(4.0)
+                      .frames(30.0, 13) // 0.4 s: the jet reaches the pool after about 0.16 s
+                      .tank({0.3, 0.45, 0.3}, 0.1)
+                      .water({0.0, 0.0, 0.0}, {0.3, 0.06, 0.3}, Vec3d::Zero(), "Pool")
+                      .build();
     InflowEmitterSettings jet;
     jet.position = Vec3d(0.15, 0.35, 0.15);
     jet.radius = 0.04;

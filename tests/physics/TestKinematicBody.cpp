@@ -3,32 +3,32 @@
 #include "rigid/EulerRotation.h"
 #include "rigid/KeyframedPath.h"
 #include "sim/Simulation.h"
+#include "support/SceneBuilder.h"
 #include "support/TestMain.h"
 
 #include <QtTest>
 
 using namespace airtrap;
+using airtrap::test::SceneBuilder;
 
 class TestKinematicBody : public QObject {
     Q_OBJECT
 
 private Q_SLOTS:
     void paddleFollowsItsKeyframes() {
-        Scene scene;
-        scene.solver.particleSpacing = 0.02;
-        scene.solver.maxSpeed = 3.0;
-        scene.frames.fps = 25.0;
-        scene.frames.endFrame = 1 + 15; // 0.6 s
-        scene.container.max = Vec3d(0.8, 0.4, 0.3);
-        FluidBlock pool;
-        pool.max = Vec3d(0.8, 0.2, 0.3);
-        scene.fluidBlocks.push_back(pool);
         RigidBodySettings paddle;
         paddle.name = "Paddle";
         paddle.motion = "kinematic";
         paddle.size = Vec3d(0.04, 0.3, 0.2);
         paddle.position = Vec3d(0.2, 0.2, 0.15);
-        scene.bodies.push_back(paddle);
+        Scene scene = SceneBuilder()
+                          .spacing(0.02)
+                          .maxSpeed(3.0)
+                          .frames(25.0, 1 + 15) // 0.6 s
+                          .tank({0.8, 0.4, 0.3})
+                          .water({0.0, 0.0, 0.0}, {0.8, 0.2, 0.3})
+                          .body(paddle)
+                          .build();
         // Sweeps right, turning 20° about z, then holds; the middle key falls between frames.
         scene.keyframes = {{"Paddle", 0.0, Vec3d(0.2, 0.2, 0.15), Vec3d::Zero()},
                            {"Paddle", 0.33, Vec3d(0.4, 0.2, 0.15), Vec3d(0.0, 0.0, -20.0)},

@@ -3,11 +3,13 @@
 // gravity off, far from the container's walls, so nothing else exchanges momentum with either: over
 // the impact the sphere's momentum loss and the water's gain agree within a few per cent.
 #include "sim/Simulation.h"
+#include "support/SceneBuilder.h"
 #include "support/TestMain.h"
 
 #include <QtTest>
 
 using namespace airtrap;
+using airtrap::test::SceneBuilder;
 
 namespace {
 
@@ -25,15 +27,10 @@ class TestMomentumExchange : public QObject {
 
 private Q_SLOTS:
     void sphereLosesWhatTheWaterGains() {
-        Scene scene;
-        scene.solver.particleSpacing = 0.02;
-        scene.solver.maxSpeed = 4.0;
-        scene.solver.gravity = Vec3d::Zero();
-        scene.container.max = Vec3d(1.4, 1.0, 1.0);
-        FluidBlock block;
-        block.min = Vec3d(0.5, 0.3, 0.3);
-        block.max = Vec3d(0.9, 0.7, 0.7);
-        scene.fluidBlocks.push_back(block);
+        SceneBuilder builder;
+        builder.spacing(0.02).maxSpeed(4.0).tank({1.4, 1.0, 1.0}).water({0.5, 0.3, 0.3},
+                                                                        {0.9, 0.7, 0.7});
+        builder.scene().solver.gravity = Vec3d::Zero();
         RigidBodySettings sphere;
         sphere.name = "Sphere";
         sphere.shape = "sphere";
@@ -41,7 +38,7 @@ private Q_SLOTS:
         sphere.density = 3000.0;
         sphere.position = Vec3d(0.3, 0.5, 0.5);
         sphere.linearVelocity = Vec3d(2.0, 0.0, 0.0);
-        scene.bodies.push_back(sphere);
+        const Scene scene = builder.body(sphere).build();
 
         Simulation simulation(scene);
         const double particleMass = simulation.solver().particleMass();

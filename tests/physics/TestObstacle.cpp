@@ -1,26 +1,27 @@
 // A static box obstacle in the path of a collapsing column: the water flows around and over it
 // and never enters it, and none is lost.
 #include "sim/Simulation.h"
+#include "support/SceneBuilder.h"
 #include "support/TestMain.h"
 
 #include <QtTest>
 
 using namespace airtrap;
+using airtrap::test::SceneBuilder;
 
 class TestObstacle : public QObject {
     Q_OBJECT
 
 private Q_SLOTS:
     void waterStaysOutOfTheObstacle() {
-        Scene scene;
-        scene.solver.particleSpacing = 0.02;
-        scene.solver.maxSpeed = 4.0;
-        scene.frames.fps = 20.0;
-        scene.frames.endFrame = 1 + 16; // 0.8 s: the surge reaches the box, climbs it, falls back
-        scene.container.max = Vec3d(1.0, 1.4, 0.2); // tall: the jet off the box climbs 1.1 m
-        FluidBlock column;
-        column.max = Vec3d(0.3, 0.4, 0.2);
-        scene.fluidBlocks.push_back(column);
+        Scene scene = SceneBuilder()
+                          .spacing(0.02)
+                          .maxSpeed(4.0)
+                          // 0.8 s: the surge reaches the box, climbs it, falls back
+                          .frames(20.0, 1 + 16)
+                          .tank({1.0, 1.4, 0.2}) // tall: the jet off the box climbs 1.1 m
+                          .water({0.0, 0.0, 0.0}, {0.3, 0.4, 0.2})
+                          .build();
         BoxObstacle box;
         box.center = Vec3d(0.6, 0.075, 0.1);
         box.size = Vec3d(0.1, 0.15, 0.2);

@@ -1,4 +1,4 @@
-// The export formats and up axes are named in one place (io/ExportFormat.h, io/UpAxis.h); the
+// The export formats and up axes are named in one place (io/ExportFormat.h, core/UpAxis.h); the
 // command line, the editor's log and the messages read the names from there.
 #include "core/Error.h"
 #include "io/SequenceExporter.h"

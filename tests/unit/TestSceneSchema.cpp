@@ -1,5 +1,5 @@
-// The parameter declarations: complete, consistent with Scene.h's defaults, and addressable by
-// dotted path.
+// The parameter declarations: complete, taking Scene.h's defaults, addressable by dotted path and
+// by the field they are bound to.
 #include "scene/ParameterCodec.h"
 #include "scene/SceneSchema.h"
 #include "support/TestMain.h"
@@ -78,6 +78,31 @@ private Q_SLOTS:
                           ParameterCodec::formatValue(parameter.declaration.defaultValue))
                              .c_str());
             }
+    }
+
+    void keysComeFromTheDeclarations() {
+        QCOMPARE(SceneSchema::keyOf(&SolverSettings::maxSpeed), std::string("solver.max_speed"));
+        QCOMPARE(SceneSchema::keyOf(&SurfaceMeshSettings::voxelSize),
+                 std::string("surface_mesh.voxel_size"));
+        QCOMPARE(SceneSchema::keyOf(&Scene::seed), std::string("seed"));
+        QCOMPARE(SceneSchema::keyOf(&FluidBlock::min, 2), std::string("fluid_blocks[2].min"));
+        QCOMPARE(SceneSchema::nameOf(&InflowEmitterSettings::stopTime), std::string("stop_time"));
+        // Same type, other owner: a body's position is not a keyframe's.
+        QCOMPARE(SceneSchema::keyOf(&BodyKeyframe::position, 1),
+                 std::string("keyframes[1].position"));
+        // A field bound to no parameter is a programming error, not a silent wrong key.
+        QVERIFY_THROWS_EXCEPTION(std::logic_error, SceneSchema::keyOf(&Scene::sourcePath));
+    }
+
+    void fieldsAreCheckedByTheirDeclaration() {
+        Scene scene;
+        QVERIFY(SceneSchema::check(scene, &SolverSettings::maxSpeed).empty());
+        scene.solver.maxSpeed = -1.0;
+        const std::string problem = SceneSchema::check(scene, &SolverSettings::maxSpeed);
+        QVERIFY2(contains(problem, "solver.max_speed = -1 is out of range"), problem.c_str());
+        scene.surfaceMesh.smoothing = 51;
+        QVERIFY(contains(SceneSchema::check(scene, &SurfaceMeshSettings::smoothing),
+                         "surface_mesh.smoothing = 51"));
     }
 
     void getAndSetReachTheField() {

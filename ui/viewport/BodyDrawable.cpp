@@ -52,7 +52,9 @@ void main() {
 
 } // namespace
 
-BodyDrawable::BodyDrawable() : buffer_(QOpenGLBuffer::VertexBuffer) {}
+BodyDrawable::BodyDrawable() : buffer_(QOpenGLBuffer::VertexBuffer) {
+    ownBuffer(buffer_, QOpenGLBuffer::StaticDraw);
+}
 
 BodyDrawable::~BodyDrawable() = default;
 
@@ -69,19 +71,15 @@ void BodyDrawable::setBodies(const SceneBodies& bodies) {
     std::vector<std::shared_ptr<const SolidMesh>> solids;
     for (const SceneBodies::Body& body : bodies_.bodies())
         solids.push_back(body.solid);
-    dirty_ = dirty_ || solids != uploaded_;
+    if (solids != uploaded_)
+        markChanged();
 }
 
-void BodyDrawable::initialize() {
-    program_ = ShaderSources{"bodies", kBodyVertexShader, QString(), kBodyFragmentShader}.build();
-    vertexArray_.create();
-    buffer_.create();
-    buffer_.setUsagePattern(QOpenGLBuffer::StaticDraw);
-    dirty_ = true;
+ShaderSources BodyDrawable::shaderSources() const {
+    return {"bodies", kBodyVertexShader, QString(), kBodyFragmentShader};
 }
 
 void BodyDrawable::upload() {
-    dirty_ = false;
     uploaded_.clear();
     firstVertex_.clear();
     std::vector<SolidMesh::Vertex> vertices;
@@ -93,7 +91,7 @@ void BodyDrawable::upload() {
                             body.solid->vertices.end());
     }
     QOpenGLExtraFunctions* gl = QOpenGLContext::currentContext()->extraFunctions();
-    QOpenGLVertexArrayObject::Binder binder(&vertexArray_);
+    QOpenGLVertexArrayObject::Binder binder(&vertexArray());
     buffer_.bind();
     buffer_.allocate(vertices.data(), int(vertices.size() * sizeof(SolidMesh::Vertex)));
     const auto stride = GLsizei(sizeof(SolidMesh::Vertex));
@@ -105,17 +103,10 @@ void BodyDrawable::upload() {
     buffer_.release();
 }
 
-void BodyDrawable::draw(const RenderContext& context) {
-    if (!program_)
-        return;
-    if (dirty_)
-        upload();
-    if (bodies_.bodies().empty())
-        return;
+void BodyDrawable::render(const RenderContext& context, QOpenGLShaderProgram& program) {
     context.gl.glEnable(GL_DEPTH_TEST);
-    program_->bind();
-    program_->setUniformValue("viewProjection", context.viewProjection);
-    QOpenGLVertexArrayObject::Binder binder(&vertexArray_);
+    program.setUniformValue("viewProjection", context.viewProjection);
+    QOpenGLVertexArrayObject::Binder binder(&vertexArray());
     const std::vector<SceneBodies::Body>& bodies = bodies_.bodies();
     for (std::size_t i = 0; i < bodies.size() && i < uploaded_.size(); ++i) {
         const SceneBodies::Body& body = bodies[i];
@@ -123,17 +114,13 @@ void BodyDrawable::draw(const RenderContext& context) {
             continue;
         const QColor colour =
             body.item == selection_ ? BoxGizmoDrawable::highlightColour() : colourOf(body.motion);
-        program_->setUniformValue("model", body.pose);
-        program_->setUniformValue("colour", rgbVector(colour));
+        program.setUniformValue("model", body.pose);
+        program.setUniformValue("colour", rgbVector(colour));
         context.gl.glDrawArrays(GL_TRIANGLES, firstVertex_[i], body.solid->vertexCount());
     }
-    program_->release();
 }
 
-void BodyDrawable::release() {
-    program_.reset();
-    buffer_.destroy();
-    vertexArray_.destroy();
+void BodyDrawable::releaseUploads() {
     uploaded_.clear();
     firstVertex_.clear();
 }

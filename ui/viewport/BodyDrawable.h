@@ -4,7 +4,7 @@
 // triangles share one buffer, uploaded again only when a body's surface changed (an edit of its
 // shape), not when it merely moved (a new frame): poses are uniforms.
 #include "document/SceneItem.h"
-#include "viewport/Drawable.h"
+#include "viewport/GlDrawable.h"
 #include "viewport/SceneBodies.h"
 
 #include <QColor>
@@ -16,7 +16,7 @@
 
 namespace airtrap {
 
-class BodyDrawable : public Drawable {
+class BodyDrawable : public GlDrawable {
 public:
     BodyDrawable();
     ~BodyDrawable() override;
@@ -29,26 +29,22 @@ public:
     //! The colour of a body with this motion ("static", "dynamic", "kinematic"), before shading.
     static QColor colourOf(const std::string& motion);
 
-    //! Builds the shader and the buffer.
-    void initialize() override;
-    //! Uploads changed surfaces, then draws every body depth-tested.
-    void draw(const RenderContext& context) override;
-    //! Frees the GL objects.
-    void release() override;
-
 private:
-    void upload();
+    ShaderSources shaderSources() const override;
+    //! Every body's surface into the one buffer.
+    void upload() override;
+    bool hasUploaded() const override { return !uploaded_.empty(); }
+    //! Every body depth-tested, posed by its uniform.
+    void render(const RenderContext& context, QOpenGLShaderProgram& program) override;
+    void releaseUploads() override;
 
-    std::unique_ptr<QOpenGLShaderProgram> program_;
     QOpenGLBuffer buffer_;
-    QOpenGLVertexArrayObject vertexArray_;
     SceneBodies bodies_;
     SceneItem selection_;
     //! The surfaces in the buffer, in body order, and where each starts. Held, so that a new
     //! surface can never reuse the address of one in the buffer and go unnoticed.
     std::vector<std::shared_ptr<const SolidMesh>> uploaded_;
     std::vector<int> firstVertex_;
-    bool dirty_ = false;
 };
 
 } // namespace airtrap

@@ -66,7 +66,10 @@ void main() {
 } // namespace
 
 BubbleDrawable::BubbleDrawable()
-    : sphereBuffer_(QOpenGLBuffer::VertexBuffer), instanceBuffer_(QOpenGLBuffer::VertexBuffer) {}
+    : sphereBuffer_(QOpenGLBuffer::VertexBuffer), instanceBuffer_(QOpenGLBuffer::VertexBuffer) {
+    ownBuffer(sphereBuffer_, QOpenGLBuffer::StaticDraw);
+    ownBuffer(instanceBuffer_, QOpenGLBuffer::DynamicDraw);
+}
 
 BubbleDrawable::~BubbleDrawable() = default;
 
@@ -93,29 +96,20 @@ void BubbleDrawable::setBubbles(const std::vector<BubbleState>& bubbles) {
                             {float(turn.x()), float(turn.y()), float(turn.z()), float(turn.w())},
                             {float(axes.x()), float(axes.y()), float(axes.z())}});
     }
-    dirty_ = true;
+    markChanged();
 }
 
-void BubbleDrawable::initialize() {
-    program_ = ShaderSources{"bubbles", kBubbleVertexShader, QString(),
-                             QStringLiteral("#version 330 core\n") + glslShading() +
-                                 QString::fromLatin1(kBubbleFragmentShaderMain)}
-                   .build();
-    vertexArray_.create();
-    sphereBuffer_.create();
-    sphereBuffer_.setUsagePattern(QOpenGLBuffer::StaticDraw);
-    instanceBuffer_.create();
-    instanceBuffer_.setUsagePattern(QOpenGLBuffer::DynamicDraw);
-    uploadSphere();
-    uploadedCount_ = 0;
-    dirty_ = true;
+ShaderSources BubbleDrawable::shaderSources() const {
+    return {"bubbles", kBubbleVertexShader, QString(),
+            QStringLiteral("#version 330 core\n") + glslShading() +
+                QString::fromLatin1(kBubbleFragmentShaderMain)};
 }
 
-void BubbleDrawable::uploadSphere() {
+void BubbleDrawable::setUpBuffers() {
     const SolidMesh sphere = SolidMesh::sphere(1.0f);
     sphereVertexCount_ = sphere.vertexCount();
     QOpenGLExtraFunctions* gl = QOpenGLContext::currentContext()->extraFunctions();
-    QOpenGLVertexArrayObject::Binder binder(&vertexArray_);
+    QOpenGLVertexArrayObject::Binder binder(&vertexArray());
     sphereBuffer_.bind();
     sphereBuffer_.allocate(sphere.vertices.data(),
                            int(sphere.vertices.size() * sizeof(SolidMesh::Vertex)));
@@ -140,38 +134,21 @@ void BubbleDrawable::uploadSphere() {
     instanceBuffer_.release();
 }
 
-void BubbleDrawable::uploadInstances() {
+void BubbleDrawable::upload() {
     static_assert(sizeof(Instance) == 10 * sizeof(float), "instances go to the GPU as they are");
-    dirty_ = false;
     instanceBuffer_.bind();
     instanceBuffer_.allocate(trapped_.data(), int(trapped_.size() * sizeof(Instance)));
     instanceBuffer_.release();
     uploadedCount_ = int(trapped_.size());
 }
 
-void BubbleDrawable::draw(const RenderContext& context) {
-    if (!program_)
-        return;
-    if (dirty_)
-        uploadInstances();
-    if (uploadedCount_ == 0)
-        return;
+void BubbleDrawable::render(const RenderContext& context, QOpenGLShaderProgram& program) {
     context.gl.glEnable(GL_DEPTH_TEST);
-    program_->bind();
-    program_->setUniformValue("view", context.view);
-    program_->setUniformValue("projection", context.projection);
-    program_->setUniformValue("colour", rgbVector(kBubbleColour));
-    QOpenGLVertexArrayObject::Binder binder(&vertexArray_);
+    program.setUniformValue("view", context.view);
+    program.setUniformValue("projection", context.projection);
+    program.setUniformValue("colour", rgbVector(kBubbleColour));
+    QOpenGLVertexArrayObject::Binder binder(&vertexArray());
     context.gl.glDrawArraysInstanced(GL_TRIANGLES, 0, sphereVertexCount_, uploadedCount_);
-    program_->release();
-}
-
-void BubbleDrawable::release() {
-    program_.reset();
-    sphereBuffer_.destroy();
-    instanceBuffer_.destroy();
-    vertexArray_.destroy();
-    uploadedCount_ = 0;
 }
 
 } // namespace airtrap

@@ -7,7 +7,7 @@
 // is uploaded once, the instances again whenever the frame changes.
 #include "bubbles/BubbleState.h"
 #include "post/OscillatingBubbleMesh.h"
-#include "viewport/Drawable.h"
+#include "viewport/GlDrawable.h"
 
 #include <QColor>
 #include <QOpenGLBuffer>
@@ -20,7 +20,7 @@
 
 namespace airtrap {
 
-class BubbleDrawable : public Drawable {
+class BubbleDrawable : public GlDrawable {
 public:
     BubbleDrawable();
     ~BubbleDrawable() override;
@@ -39,21 +39,19 @@ public:
     //! glassy look, for every shader that draws bubbles.
     static QString glslShading();
 
-    //! Builds the shader, the sphere and the instance buffer.
-    void initialize() override;
-    //! Uploads changed bubbles, then draws them all depth-tested in one call.
-    void draw(const RenderContext& context) override;
-    //! Frees the GL objects.
-    void release() override;
-
 private:
-    void uploadSphere();
-    void uploadInstances();
+    ShaderSources shaderSources() const override;
+    //! The unit sphere, once, and the instance attributes' layout.
+    void setUpBuffers() override;
+    //! The bubbles as instances.
+    void upload() override;
+    bool hasUploaded() const override { return uploadedCount_ > 0; }
+    //! All bubbles depth-tested in one instanced call.
+    void render(const RenderContext& context, QOpenGLShaderProgram& program) override;
+    void releaseUploads() override { uploadedCount_ = 0; }
 
-    std::unique_ptr<QOpenGLShaderProgram> program_;
     QOpenGLBuffer sphereBuffer_;
     QOpenGLBuffer instanceBuffer_;
-    QOpenGLVertexArrayObject vertexArray_;
     int sphereVertexCount_ = 0;
     //! Per bubble: centre (m), rotation (x y z w, unit sphere's z onto the velocity), semi-axes
     //! (m).
@@ -66,7 +64,6 @@ private:
     OscillatingBubbleMesh shape_{BubbleMeshSettings{}};
     std::vector<Instance> trapped_;
     int uploadedCount_ = 0;
-    bool dirty_ = false;
 };
 
 } // namespace airtrap

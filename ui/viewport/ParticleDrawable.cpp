@@ -74,7 +74,9 @@ QString fragmentShader() {
 
 } // namespace
 
-ParticleDrawable::ParticleDrawable() : buffer_(QOpenGLBuffer::VertexBuffer) {}
+ParticleDrawable::ParticleDrawable() : buffer_(QOpenGLBuffer::VertexBuffer) {
+    ownBuffer(buffer_, QOpenGLBuffer::DynamicDraw);
+}
 
 ParticleDrawable::~ParticleDrawable() = default;
 
@@ -87,33 +89,26 @@ void ParticleDrawable::setFrame(std::shared_ptr<const FrameData> frame) {
     maxSpeed_ = speeds_.empty() ? 0.0f : *std::max_element(speeds_.begin(), speeds_.end());
     count_ = int(speeds_.size());
     frame_ = std::move(frame);
-    dirty_ = true;
+    markChanged();
 }
 
 float ParticleDrawable::effectiveSpeedScale() const {
     return std::max(speedScale_ > 0.0f ? speedScale_ : maxSpeed_, kMinSpeedScale);
 }
 
-void ParticleDrawable::initialize() {
-    program_ = ShaderSources{"particles", vertexShader(), QString(), fragmentShader()}.build();
-    vertexArray_.create();
-    buffer_.create();
-    buffer_.setUsagePattern(QOpenGLBuffer::DynamicDraw);
-    uploadedCount_ = 0;
-    dirty_ = true;
+ShaderSources ParticleDrawable::shaderSources() const {
+    return {"particles", vertexShader(), QString(), fragmentShader()};
 }
 
 void ParticleDrawable::upload() {
-    dirty_ = false;
     uploadedCount_ = 0;
-    if (!frame_) {
+    if (!frame_)
         return;
-    }
     const std::vector<Vec3f>& positions = frame_->state.fluid.positions;
     const int positionBytes = int(positions.size() * sizeof(Vec3f));
     const int speedBytes = int(speeds_.size() * sizeof(float));
     QOpenGLExtraFunctions* gl = QOpenGLContext::currentContext()->extraFunctions();
-    QOpenGLVertexArrayObject::Binder binder(&vertexArray_);
+    QOpenGLVertexArrayObject::Binder binder(&vertexArray());
     buffer_.bind();
     buffer_.allocate(positionBytes + speedBytes);
     buffer_.write(0, positions.data(), positionBytes);
@@ -144,40 +139,22 @@ int ParticleDrawable::drawStride() const {
     return (uploadedCount_ + movingBudget_ - 1) / movingBudget_;
 }
 
-void ParticleDrawable::draw(const RenderContext& context) {
-    if (!program_) {
-        return;
-    }
-    if (dirty_) {
-        upload();
-    }
-    if (uploadedCount_ == 0) {
-        return;
-    }
+void ParticleDrawable::render(const RenderContext& context, QOpenGLShaderProgram& program) {
     QOpenGLExtraFunctions& gl = context.gl;
     gl.glEnable(GL_DEPTH_TEST);
     gl.glEnable(GL_PROGRAM_POINT_SIZE);
-    program_->bind();
-    program_->setUniformValue("view", context.view);
-    program_->setUniformValue("projection", context.projection);
+    program.setUniformValue("view", context.view);
+    program.setUniformValue("projection", context.projection);
     const int stride = drawStride();
     // Fewer, larger spheres fill about the same volume: the radius grows with the cube root.
-    program_->setUniformValue("radius", radius_ * std::cbrt(float(stride)));
-    program_->setUniformValue("viewportHeight", float(context.framebufferSize.height()));
-    program_->setUniformValue("speedScale", effectiveSpeedScale());
-    QOpenGLVertexArrayObject::Binder binder(&vertexArray_);
+    program.setUniformValue("radius", radius_ * std::cbrt(float(stride)));
+    program.setUniformValue("viewportHeight", float(context.framebufferSize.height()));
+    program.setUniformValue("speedScale", effectiveSpeedScale());
+    QOpenGLVertexArrayObject::Binder binder(&vertexArray());
     if (stride != boundStride_)
         bindAttributes(stride);
     gl.glDrawArrays(GL_POINTS, 0, (uploadedCount_ + stride - 1) / stride);
-    program_->release();
     gl.glDisable(GL_PROGRAM_POINT_SIZE);
-}
-
-void ParticleDrawable::release() {
-    program_.reset();
-    buffer_.destroy();
-    vertexArray_.destroy();
-    uploadedCount_ = 0;
 }
 
 } // namespace airtrap

@@ -4,7 +4,7 @@
 // (positions, then speeds, in one buffer) and then drawn with a single call per paint, which keeps
 // the view interactive with hundreds of thousands of particles.
 #include "cache/FrameFile.h"
-#include "viewport/Drawable.h"
+#include "viewport/GlDrawable.h"
 
 #include <QOpenGLBuffer>
 #include <QOpenGLShaderProgram>
@@ -14,7 +14,7 @@
 
 namespace airtrap {
 
-class ParticleDrawable : public Drawable {
+class ParticleDrawable : public GlDrawable {
 public:
     ParticleDrawable();
     ~ParticleDrawable() override;
@@ -42,24 +42,20 @@ public:
     //! Every how many particles one is drawn in the next paint (1 = all).
     int drawStride() const;
 
-    //! Builds the sprite shader and the buffer.
-    void initialize() override;
-    //! Uploads a new frame if there is one, then draws all particles in one call.
-    void draw(const RenderContext& context) override;
-    //! Frees the GL objects.
-    void release() override;
-
 private:
-    void upload();
+    ShaderSources shaderSources() const override;
+    //! The frame's positions, then its speeds, in one buffer.
+    void upload() override;
+    bool hasUploaded() const override { return uploadedCount_ > 0; }
+    //! All particles (or every drawStride()-th) in one call.
+    void render(const RenderContext& context, QOpenGLShaderProgram& program) override;
+    void releaseUploads() override { uploadedCount_ = 0; }
     //! Points the vertex attributes at every `stride`-th particle of the buffer.
     void bindAttributes(int stride);
 
-    std::unique_ptr<QOpenGLShaderProgram> program_;
     QOpenGLBuffer buffer_;
-    QOpenGLVertexArrayObject vertexArray_;
     std::shared_ptr<const FrameData> frame_;
     std::vector<float> speeds_; //!< of frame_, in its particle order
-    bool dirty_ = false;        //!< frame_ is not what the buffer holds
     int count_ = 0;
     int uploadedCount_ = 0;
     float radius_ = 0.01f;

@@ -56,7 +56,9 @@ QString withVersion(const QString& functions, const char* main) {
 
 } // namespace
 
-SubgridBubbleDrawable::SubgridBubbleDrawable() : buffer_(QOpenGLBuffer::VertexBuffer) {}
+SubgridBubbleDrawable::SubgridBubbleDrawable() : buffer_(QOpenGLBuffer::VertexBuffer) {
+    ownBuffer(buffer_, QOpenGLBuffer::DynamicDraw);
+}
 
 SubgridBubbleDrawable::~SubgridBubbleDrawable() = default;
 
@@ -67,22 +69,19 @@ void SubgridBubbleDrawable::setBubbles(const std::vector<SubgridBubble>& bubbles
         const Vec3f centre = bubble.position.cast<float>();
         points_.push_back({{centre.x(), centre.y(), centre.z()}, float(bubble.radius)});
     }
-    dirty_ = true;
+    markChanged();
 }
 
-void SubgridBubbleDrawable::initialize() {
-    program_ =
-        ShaderSources{"sub-grid bubbles",
-                      withVersion(SphereSprite::vertexFunctions(), kSubgridVertexShaderMain),
-                      QString(),
-                      withVersion(SphereSprite::fragmentFunctions() + BubbleDrawable::glslShading(),
-                                  kSubgridFragmentShaderMain)}
-            .build();
-    vertexArray_.create();
-    buffer_.create();
-    buffer_.setUsagePattern(QOpenGLBuffer::DynamicDraw);
+ShaderSources SubgridBubbleDrawable::shaderSources() const {
+    return {"sub-grid bubbles", withVersion(SphereSprite::vertexFunctions(), kSubgridVertexShaderMain),
+            QString(),
+            withVersion(SphereSprite::fragmentFunctions() + BubbleDrawable::glslShading(),
+                        kSubgridFragmentShaderMain)};
+}
+
+void SubgridBubbleDrawable::setUpBuffers() {
     QOpenGLExtraFunctions* gl = QOpenGLContext::currentContext()->extraFunctions();
-    QOpenGLVertexArrayObject::Binder binder(&vertexArray_);
+    QOpenGLVertexArrayObject::Binder binder(&vertexArray());
     buffer_.bind();
     const auto stride = GLsizei(sizeof(Point));
     gl->glEnableVertexAttribArray(0);
@@ -94,46 +93,28 @@ void SubgridBubbleDrawable::initialize() {
         1, 1, GL_FLOAT, GL_FALSE, stride,
         reinterpret_cast<const void*>(std::intptr_t(offsetof(Point, radius))));
     buffer_.release();
-    uploadedCount_ = 0;
-    dirty_ = true;
 }
 
 void SubgridBubbleDrawable::upload() {
     static_assert(sizeof(Point) == 4 * sizeof(float), "points go to the GPU as they are");
-    dirty_ = false;
     buffer_.bind();
     buffer_.allocate(points_.data(), int(points_.size() * sizeof(Point)));
     buffer_.release();
     uploadedCount_ = int(points_.size());
 }
 
-void SubgridBubbleDrawable::draw(const RenderContext& context) {
-    if (!program_)
-        return;
-    if (dirty_)
-        upload();
-    if (uploadedCount_ == 0)
-        return;
+void SubgridBubbleDrawable::render(const RenderContext& context, QOpenGLShaderProgram& program) {
     QOpenGLExtraFunctions& gl = context.gl;
     gl.glEnable(GL_DEPTH_TEST);
     gl.glEnable(GL_PROGRAM_POINT_SIZE);
-    program_->bind();
-    program_->setUniformValue("view", context.view);
-    program_->setUniformValue("projection", context.projection);
-    program_->setUniformValue("viewportHeight", float(context.framebufferSize.height()));
-    program_->setUniformValue("minimumPixels", kMinimumPixels);
-    program_->setUniformValue("colour", rgbVector(BubbleDrawable::colour()));
-    QOpenGLVertexArrayObject::Binder binder(&vertexArray_);
+    program.setUniformValue("view", context.view);
+    program.setUniformValue("projection", context.projection);
+    program.setUniformValue("viewportHeight", float(context.framebufferSize.height()));
+    program.setUniformValue("minimumPixels", kMinimumPixels);
+    program.setUniformValue("colour", rgbVector(BubbleDrawable::colour()));
+    QOpenGLVertexArrayObject::Binder binder(&vertexArray());
     gl.glDrawArrays(GL_POINTS, 0, uploadedCount_);
-    program_->release();
     gl.glDisable(GL_PROGRAM_POINT_SIZE);
-}
-
-void SubgridBubbleDrawable::release() {
-    program_.reset();
-    buffer_.destroy();
-    vertexArray_.destroy();
-    uploadedCount_ = 0;
 }
 
 } // namespace airtrap

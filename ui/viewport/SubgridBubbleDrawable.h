@@ -4,7 +4,7 @@
 // specks, and shaded as a glassy sphere in the trapped bubbles' colour. Thousands of them cost
 // one small upload per frame and one draw call.
 #include "post/SubgridBubble.h"
-#include "viewport/Drawable.h"
+#include "viewport/GlDrawable.h"
 
 #include <QOpenGLBuffer>
 #include <QOpenGLShaderProgram>
@@ -14,7 +14,7 @@
 
 namespace airtrap {
 
-class SubgridBubbleDrawable : public Drawable {
+class SubgridBubbleDrawable : public GlDrawable {
 public:
     SubgridBubbleDrawable();
     ~SubgridBubbleDrawable() override;
@@ -27,15 +27,14 @@ public:
     //! Smallest drawn diameter, in device pixels.
     static constexpr float kMinimumPixels = 3.0f;
 
-    //! Builds the point shader and the buffer.
-    void initialize() override;
-    //! Uploads changed bubbles, then draws them all depth-tested in one call.
-    void draw(const RenderContext& context) override;
-    //! Frees the GL objects.
-    void release() override;
-
 private:
-    void upload();
+    ShaderSources shaderSources() const override;
+    void setUpBuffers() override;
+    void upload() override;
+    bool hasUploaded() const override { return uploadedCount_ > 0; }
+    //! All bubbles depth-tested in one call.
+    void render(const RenderContext& context, QOpenGLShaderProgram& program) override;
+    void releaseUploads() override { uploadedCount_ = 0; }
 
     //! Per bubble: centre (m) and radius (m), as the buffer holds them.
     struct Point {
@@ -43,12 +42,9 @@ private:
         float radius;
     };
 
-    std::unique_ptr<QOpenGLShaderProgram> program_;
     QOpenGLBuffer buffer_;
-    QOpenGLVertexArrayObject vertexArray_;
     std::vector<Point> points_;
     int uploadedCount_ = 0;
-    bool dirty_ = false;
 };
 
 } // namespace airtrap

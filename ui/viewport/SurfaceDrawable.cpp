@@ -75,7 +75,11 @@ std::vector<GLuint> distinctEdges(const TriangleMesh& mesh) {
 
 SurfaceDrawable::SurfaceDrawable()
     : vertexBuffer_(QOpenGLBuffer::VertexBuffer), indexBuffer_(QOpenGLBuffer::IndexBuffer),
-      edgeIndexBuffer_(QOpenGLBuffer::IndexBuffer) {}
+      edgeIndexBuffer_(QOpenGLBuffer::IndexBuffer) {
+    ownBuffer(vertexBuffer_, QOpenGLBuffer::DynamicDraw);
+    ownBuffer(indexBuffer_, QOpenGLBuffer::DynamicDraw);
+    ownBuffer(edgeIndexBuffer_, QOpenGLBuffer::DynamicDraw);
+}
 
 SurfaceDrawable::~SurfaceDrawable() = default;
 
@@ -85,25 +89,17 @@ QColor SurfaceDrawable::colour() {
 
 void SurfaceDrawable::setMesh(std::shared_ptr<const TriangleMesh> mesh) {
     mesh_ = std::move(mesh);
-    dirty_ = true;
+    markChanged();
 }
 
-void SurfaceDrawable::initialize() {
-    program_ =
-        ShaderSources{"surface", kSurfaceVertexShader, QString(), kSurfaceFragmentShader}.build();
-    vertexArray_.create();
-    vertexBuffer_.create();
-    vertexBuffer_.setUsagePattern(QOpenGLBuffer::DynamicDraw);
-    indexBuffer_.create();
-    indexBuffer_.setUsagePattern(QOpenGLBuffer::DynamicDraw);
+ShaderSources SurfaceDrawable::shaderSources() const {
+    return {"surface", kSurfaceVertexShader, QString(), kSurfaceFragmentShader};
+}
+
+void SurfaceDrawable::setUpBuffers() {
     edgeArray_.create();
-    edgeIndexBuffer_.create();
-    edgeIndexBuffer_.setUsagePattern(QOpenGLBuffer::DynamicDraw);
-    bindVertices(vertexArray_, indexBuffer_);
+    bindVertices(vertexArray(), indexBuffer_);
     bindVertices(edgeArray_, edgeIndexBuffer_);
-    uploadedIndices_ = 0;
-    uploadedEdgeIndices_ = 0;
-    dirty_ = true;
 }
 
 void SurfaceDrawable::bindVertices(QOpenGLVertexArrayObject& array, QOpenGLBuffer& indices) {
@@ -121,7 +117,6 @@ void SurfaceDrawable::bindVertices(QOpenGLVertexArrayObject& array, QOpenGLBuffe
 }
 
 void SurfaceDrawable::upload() {
-    dirty_ = false;
     edgesDirty_ = true;
     uploadedIndices_ = 0;
     if (!mesh_ || mesh_->triangles.empty())
@@ -133,7 +128,7 @@ void SurfaceDrawable::upload() {
         for (const Vec3d* value : {&mesh_->vertices[v], &normals[v]})
             for (int axis = 0; axis < 3; ++axis)
                 vertices.push_back(float((*value)[axis]));
-    QOpenGLVertexArrayObject::Binder binder(&vertexArray_);
+    QOpenGLVertexArrayObject::Binder binder(&vertexArray());
     vertexBuffer_.bind();
     vertexBuffer_.allocate(vertices.data(), int(vertices.size() * sizeof(float)));
     vertexBuffer_.release();
@@ -157,13 +152,7 @@ void SurfaceDrawable::uploadEdges() {
     uploadedEdgeIndices_ = int(edges.size());
 }
 
-void SurfaceDrawable::draw(const RenderContext& context) {
-    if (!program_)
-        return;
-    if (dirty_)
-        upload();
-    if (uploadedIndices_ == 0)
-        return;
+void SurfaceDrawable::render(const RenderContext& context, QOpenGLShaderProgram& program) {
     const bool wireframe = shading_ == SurfaceShading::Wireframe;
     if (wireframe && edgesDirty_)
         uploadEdges();
@@ -172,31 +161,24 @@ void SurfaceDrawable::draw(const RenderContext& context) {
     gl.glEnable(GL_BLEND);
     gl.glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     gl.glDepthMask(GL_FALSE); // what lies behind the sheet stays visible through it
-    program_->bind();
-    program_->setUniformValue("view", context.view);
-    program_->setUniformValue("projection", context.projection);
+    program.setUniformValue("view", context.view);
+    program.setUniformValue("projection", context.projection);
     // Lines are thin: paler than the sheet so that they read against the dark background.
-    program_->setUniformValue("colour",
-                              rgbVector(wireframe ? kSurfaceColour.lighter(160) : kSurfaceColour));
-    program_->setUniformValue("opacity", opacity());
+    program.setUniformValue("colour",
+                            rgbVector(wireframe ? kSurfaceColour.lighter(160) : kSurfaceColour));
+    program.setUniformValue("opacity", opacity());
     if (wireframe) {
         QOpenGLVertexArrayObject::Binder binder(&edgeArray_);
         gl.glDrawElements(GL_LINES, uploadedEdgeIndices_, GL_UNSIGNED_INT, nullptr);
     } else {
-        QOpenGLVertexArrayObject::Binder binder(&vertexArray_);
+        QOpenGLVertexArrayObject::Binder binder(&vertexArray());
         gl.glDrawElements(GL_TRIANGLES, uploadedIndices_, GL_UNSIGNED_INT, nullptr);
     }
-    program_->release();
     gl.glDepthMask(GL_TRUE);
     gl.glDisable(GL_BLEND);
 }
 
-void SurfaceDrawable::release() {
-    program_.reset();
-    vertexBuffer_.destroy();
-    indexBuffer_.destroy();
-    vertexArray_.destroy();
-    edgeIndexBuffer_.destroy();
+void SurfaceDrawable::releaseUploads() {
     edgeArray_.destroy();
     uploadedIndices_ = 0;
     uploadedEdgeIndices_ = 0;

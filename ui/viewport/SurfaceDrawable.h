@@ -6,7 +6,7 @@
 // read. Opaque, it hides what it covers; as a wireframe, its triangles' edges are drawn once each
 // (a shared edge is one line), lit like the sheet. Uploaded again only when the mesh changes.
 #include "rigid/TriangleMesh.h"
-#include "viewport/Drawable.h"
+#include "viewport/GlDrawable.h"
 #include "viewport/SurfaceShading.h"
 
 #include <QColor>
@@ -17,7 +17,7 @@
 
 namespace airtrap {
 
-class SurfaceDrawable : public Drawable {
+class SurfaceDrawable : public GlDrawable {
 public:
     SurfaceDrawable();
     ~SurfaceDrawable() override;
@@ -38,20 +38,23 @@ public:
 
     static QColor colour();
 
-    void initialize() override;
-    void draw(const RenderContext& context) override;
-    void release() override;
-
 private:
+    ShaderSources shaderSources() const override;
+    //! The edges' vertex array, and both arrays' attribute layout.
+    void setUpBuffers() override;
+    //! The vertices with their normals and the triangles; the edges wait for the wireframe.
+    void upload() override;
+    bool hasUploaded() const override { return uploadedIndices_ > 0; }
+    //! The sheet blended over what lies behind it, or its edges.
+    void render(const RenderContext& context, QOpenGLShaderProgram& program) override;
+    void releaseUploads() override;
+
     //! Attaches the vertex buffer's position and normal to `array`, with `indices` as its elements.
     void bindVertices(QOpenGLVertexArrayObject& array, QOpenGLBuffer& indices);
-    void upload();
     void uploadEdges();
 
-    std::unique_ptr<QOpenGLShaderProgram> program_;
     QOpenGLBuffer vertexBuffer_;
     QOpenGLBuffer indexBuffer_;
-    QOpenGLVertexArrayObject vertexArray_;
     // The wireframe: the same vertices, a second vertex array for the edge index buffer.
     QOpenGLBuffer edgeIndexBuffer_;
     QOpenGLVertexArrayObject edgeArray_;
@@ -59,7 +62,6 @@ private:
     int uploadedIndices_ = 0;
     int uploadedEdgeIndices_ = 0;
     SurfaceShading shading_ = SurfaceShading::Translucent;
-    bool dirty_ = false;
     bool edgesDirty_ = false; // the edges are found only when the wireframe is first drawn
 };
 
