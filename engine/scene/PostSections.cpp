@@ -11,10 +11,15 @@ using SurfaceAccess = ObjectAccess<&Scene::surfaceMesh>;
 using BubbleMeshAccess = ObjectAccess<&Scene::bubbleMesh>;
 using SubgridAccess = ObjectAccess<&Scene::subgridBubbles>;
 
+SchemaSection renderSetting(SchemaSection section) {
+    section.renderSetting = true;
+    return section;
+}
+
 } // namespace
 
 SchemaSection surfaceMeshSection() {
-    return objectSection(
+    return renderSetting(objectSection(
         "surface_mesh", "Surface mesh",
         "The water mesh for rendering: a level set of the particles, smoothed without losing "
         "volume, with the polygons along bodies and bubbles left out so the free surface is all "
@@ -65,11 +70,11 @@ SchemaSection surfaceMeshSection() {
                                          "The corners of the rest that are this close are moved "
                                          "onto it, so the water meets it with no gap."},
                                 &SurfaceMeshSettings::margin),
-        });
+        }));
 }
 
 SchemaSection bubbleMeshSection() {
-    return objectSection(
+    return renderSetting(objectSection(
         "bubble_mesh", "Bubble mesh",
         "How bubbles are rendered: ellipsoids of the bubble's volume, stretched along their "
         "velocity, that wobble and settle after their birth (paper §4.1, eqs. 7–10).",
@@ -103,11 +108,11 @@ SchemaSection bubbleMeshSection() {
                                     .maximum = 20.0,
                                     .help = "Oscillations within the duration (eq. 10)."},
                                    &BubbleMeshSettings::cycles),
-        });
+        }));
 }
 
 SchemaSection subgridBubblesSection() {
-    return objectSection(
+    return renderSetting(objectSection(
         "subgrid_bubbles", "Sub-grid bubbles",
         "Air too fine for the grid, added after the bake (paper §4.2): each new trapped bubble "
         "sheds small bubbles around itself, more the less of it lies in water. They ride the "
@@ -163,7 +168,7 @@ SchemaSection subgridBubblesSection() {
                                  .help = "Midpoint (RK2) steps between two frames. More follow "
                                          "fast, curling water more closely."},
                                 &SubgridBubbleSettings::substeps),
-        });
+        }));
 }
 
 } // namespace airtrap

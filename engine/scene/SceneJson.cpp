@@ -241,9 +241,9 @@ std::string parameterHash(const Scene& scene) {
     canonical.erase("name");
     canonical["frames"].erase("end_frame");
     // The render outputs' settings shape the post stage only; the bake does not read them.
-    canonical.erase("surface_mesh");
-    canonical.erase("bubble_mesh");
-    canonical.erase("subgrid_bubbles");
+    for (const SchemaSection& section : SceneSchema::sections())
+        if (section.renderSetting)
+            canonical.erase(section.key);
     char hex[17];
     std::snprintf(hex, sizeof hex, "%016llx",
                   static_cast<unsigned long long>(fnv1a64(canonical.dump())));

@@ -135,8 +135,9 @@ private:
                     error(label + ": min." + a + " = " + number(block.min[axis]) +
                           " must be less than max." + a + " = " + number(block.max[axis]));
                 else if (block.max[axis] - block.min[axis] < spacing)
-                    warning(label + " is thinner than " + key(&SolverSettings::particleSpacing) + " = " +
-                            number(spacing) + " m along " + a + "; it may hold no particles");
+                    warning(label + " is thinner than " + key(&SolverSettings::particleSpacing) +
+                            " = " + number(spacing) + " m along " + a +
+                            "; it may hold no particles");
             }
             // The domain, not just the tank: water may start above the rim and fall in.
             if (containerValid)
@@ -202,7 +203,8 @@ private:
                       "%s = %s m; the limit is %.0f million. Use a spacing of "
                       "at least %.2g m or smaller fluid blocks",
                       budgets > 0.0 ? " and emitter budgets" : "", particles / 1e6,
-                      key(&SolverSettings::particleSpacing).c_str(), number(spacing).c_str(), SceneValidator::kMaxParticles / 1e6,
+                      key(&SolverSettings::particleSpacing).c_str(), number(spacing).c_str(),
+                      SceneValidator::kMaxParticles / 1e6,
                       std::cbrt(volume / std::max(1.0, SceneValidator::kMaxParticles - budgets)) *
                           1.005);
         error(text);
@@ -260,8 +262,8 @@ private:
         if (bubbles.enabled && bubbles.maxRiseSpeed > scene_.solver.maxSpeed)
             error(key(&BubbleSettings::maxRiseSpeed) + " = " + number(bubbles.maxRiseSpeed) +
                   " m/s exceeds " + key(&SolverSettings::maxSpeed) + " = " +
-                  number(scene_.solver.maxSpeed) + " m/s; raise " +
-                  key(&SolverSettings::maxSpeed) + " or lower the cap");
+                  number(scene_.solver.maxSpeed) + " m/s; raise " + key(&SolverSettings::maxSpeed) +
+                  " or lower the cap");
     }
 
     void checkSurfaceMesh() {
@@ -275,8 +277,7 @@ private:
         if (subgrid.minSize > subgrid.maxSize)
             error(key(&SubgridBubbleSettings::minSize) + " = " + number(subgrid.minSize) +
                   " exceeds " + key(&SubgridBubbleSettings::maxSize) + " = " +
-                  number(subgrid.maxSize) +
-                  "; the radii are drawn between the two");
+                  number(subgrid.maxSize) + "; the radii are drawn between the two");
     }
 
     void checkBodyNames() {

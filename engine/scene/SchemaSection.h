@@ -16,6 +16,9 @@ struct SchemaSection {
     std::string label; //!< "Solver", "Fluid blocks"
     std::string help;  //!< one sentence for the docs and the panel header
     bool isArray = false;
+    //! A render setting: read by the post stage and the exports only, so it may change after a
+    //! bake (`--set` on post and export) and is left out of the cache's parameter hash.
+    bool renderSetting = false;
     std::string elementLabel; //!< label of one array element ("Fluid block"); arrays only
     std::vector<BoundParameter> parameters;
 

@@ -39,9 +39,9 @@ void RigidWorld::place(SimulationState& state) {
                         " rigid bodies but the scene has " + std::to_string(sceneBodies) +
                         "; the frame was baked from another scene");
     if (!state.bubbles.empty() && !bubbles_)
-        throw Error(ErrorKind::CacheCorrupt,
-                    "the state holds bubbles but the scene has " +
-                        SceneSchema::keyOf(&BubbleSettings::enabled) + " = false");
+        throw Error(ErrorKind::CacheCorrupt, "the state holds bubbles but the scene has " +
+                                                 SceneSchema::keyOf(&BubbleSettings::enabled) +
+                                                 " = false");
     for (std::size_t k = 0; k < state.bodies.size(); ++k)
         bodies_[sceneryCount_ + k].setState(state.bodies[k]);
     if (bubbles_)

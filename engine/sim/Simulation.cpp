@@ -262,8 +262,9 @@ void Simulation::checkHealth(const StepReport& report, double timeToFrameEnd, in
     const std::string maxSpeed = SceneSchema::keyOf(&SolverSettings::maxSpeed);
     if (report.nonFinite)
         throw Error(ErrorKind::SimulationBlowUp,
-                    where + "the simulation produced NaN or infinite values. Likely cause: a time "
-                            "step too large for the forces (lower " +
+                    where +
+                        "the simulation produced NaN or infinite values. Likely cause: a time "
+                        "step too large for the forces (lower " +
                         cflFactor + ") or bodies overlapping the water at t = 0.");
     if (report.maxDensityDeviation > scene_.solver.maxDensityError)
         throw Error(ErrorKind::SimulationBlowUp,
@@ -278,8 +279,8 @@ void Simulation::checkHealth(const StepReport& report, double timeToFrameEnd, in
                     where + std::to_string(lost) +
                         " particles left the domain in one frame. Likely cause: the water "
                         "exploded (lower " +
-                        cflFactor + ", raise " + maxSpeed +
-                        ") or " + SceneSchema::keyOf(&ContainerSettings::headroom) +
+                        cflFactor + ", raise " + maxSpeed + ") or " +
+                        SceneSchema::keyOf(&ContainerSettings::headroom) +
                         " is too small for the splash.");
     // A step shortened to land on the frame time may be short; one the forces made short is not.
     if (report.timeStep < kMinTimeStep && report.timeStep < 0.5 * timeToFrameEnd)

@@ -28,8 +28,10 @@ class TestMomentumExchange : public QObject {
 private Q_SLOTS:
     void sphereLosesWhatTheWaterGains() {
         SceneBuilder builder;
-        builder.spacing(0.02).maxSpeed(4.0).tank({1.4, 1.0, 1.0}).water({0.5, 0.3, 0.3},
-                                                                        {0.9, 0.7, 0.7});
+        builder.spacing(0.02)
+            .maxSpeed(4.0)
+            .tank({1.4, 1.0, 1.0})
+            .water({0.5, 0.3, 0.3}, {0.9, 0.7, 0.7});
         builder.scene().solver.gravity = Vec3d::Zero();
         RigidBodySettings sphere;
         sphere.name = "Sphere";

@@ -35,8 +35,7 @@ public:
         return *this;
     }
     //! A block of water from `min` to `max` (m) moving at `velocity` (m/s).
-    SceneBuilder& water(const Vec3d& min, const Vec3d& max,
-                        const Vec3d& velocity = Vec3d::Zero(),
+    SceneBuilder& water(const Vec3d& min, const Vec3d& max, const Vec3d& velocity = Vec3d::Zero(),
                         const std::string& name = FluidBlock{}.name) {
         FluidBlock block;
         block.name = name;

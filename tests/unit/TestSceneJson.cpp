@@ -289,6 +289,7 @@ private Q_SLOTS:
         const std::string hash = parameterHash(scene);
         scene.surfaceMesh.smoothing = 9;
         scene.bubbleMesh.magnitude = 0.2;
+        scene.subgridBubbles.maxSize *= 2.0;
         QCOMPARE(parameterHash(scene), hash);
         scene.solver.viscosityAlpha = 0.2;
         QVERIFY(parameterHash(scene) != hash);

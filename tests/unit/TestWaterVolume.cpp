@@ -120,15 +120,13 @@ private Q_SLOTS:
         QVERIFY_THROWS_EXCEPTION(Error, WaterVolume::build(fluid, 0.02, rough));
         QVERIFY_THROWS_EXCEPTION(Error, WaterVolume::build(fluid, 0.0, {}));
         // Worded as the scene validator words them, from the same declarations and rule.
-        const std::string tooCoarse =
-            test::errorMessage([&] { WaterVolume::build(fluid, 0.02, coarse); },
-                               ErrorKind::InvalidInput);
+        const std::string tooCoarse = test::errorMessage(
+            [&] { WaterVolume::build(fluid, 0.02, coarse); }, ErrorKind::InvalidInput);
         QVERIFY2(test::contains(tooCoarse, "surface_mesh.particle_radius = 1 is less than 1.5 × "
                                            "surface_mesh.voxel_size"),
                  tooCoarse.c_str());
-        const std::string tooRough =
-            test::errorMessage([&] { WaterVolume::build(fluid, 0.02, rough); },
-                               ErrorKind::InvalidInput);
+        const std::string tooRough = test::errorMessage(
+            [&] { WaterVolume::build(fluid, 0.02, rough); }, ErrorKind::InvalidInput);
         QVERIFY2(test::contains(tooRough, "surface_mesh.smoothing = -1 is out of range"),
                  tooRough.c_str());
     }

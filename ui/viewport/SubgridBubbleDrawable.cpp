@@ -73,8 +73,8 @@ void SubgridBubbleDrawable::setBubbles(const std::vector<SubgridBubble>& bubbles
 }
 
 ShaderSources SubgridBubbleDrawable::shaderSources() const {
-    return {"sub-grid bubbles", withVersion(SphereSprite::vertexFunctions(), kSubgridVertexShaderMain),
-            QString(),
+    return {"sub-grid bubbles",
+            withVersion(SphereSprite::vertexFunctions(), kSubgridVertexShaderMain), QString(),
             withVersion(SphereSprite::fragmentFunctions() + BubbleDrawable::glslShading(),
                         kSubgridFragmentShaderMain)};
 }
