@@ -99,9 +99,10 @@ private:
         bool valid = true;
         for (int axis = 0; axis < 3; ++axis)
             if (container.min[axis] >= container.max[axis]) {
-                error(std::string("container: min.") + kAxes[axis] + " = " +
-                      number(container.min[axis]) + " must be less than max." + kAxes[axis] +
-                      " = " + number(container.max[axis]));
+                error(key(&ContainerSettings::min) + "." + kAxes[axis] + " = " +
+                      number(container.min[axis]) + " must be less than " +
+                      key(&ContainerSettings::max) + "." + kAxes[axis] + " = " +
+                      number(container.max[axis]));
                 valid = false;
             }
         return valid;
@@ -132,8 +133,9 @@ private:
             for (int axis = 0; axis < 3; ++axis) {
                 const std::string a = kAxes[axis];
                 if (block.min[axis] >= block.max[axis])
-                    error(label + ": min." + a + " = " + number(block.min[axis]) +
-                          " must be less than max." + a + " = " + number(block.max[axis]));
+                    error(label + ": " + name(&FluidBlock::min) + "." + a + " = " +
+                          number(block.min[axis]) + " must be less than " + name(&FluidBlock::max) +
+                          "." + a + " = " + number(block.max[axis]));
                 else if (block.max[axis] - block.min[axis] < spacing)
                     warning(label + " is thinner than " + key(&SolverSettings::particleSpacing) +
                             " = " + number(spacing) + " m along " + a +
@@ -170,7 +172,8 @@ private:
                       name(&SolverSettings::maxSpeed) + ") would be too slow for the jet. Raise " +
                       key(&SolverSettings::maxSpeed) + " or lower the speed");
             if (emitter.direction.norm() < kTolerance) {
-                error(label + ": direction is zero; give the jet a direction, e.g. [0, -1, 0]");
+                error(label + ": " + name(&InflowEmitterSettings::direction) +
+                      " is zero; give the jet a direction, e.g. [0, -1, 0]");
                 continue;
             }
             if (containerValid) {
@@ -180,8 +183,9 @@ private:
             }
             const InflowNozzle nozzle(emitter, solver.particleSpacing);
             if (nozzle.layerBudget() == 0)
-                warning(label + ": max_particles = " + std::to_string(emitter.maxParticles) +
-                        " is less than one layer of " + std::to_string(nozzle.particlesPerLayer()) +
+                warning(label + ": " + name(&InflowEmitterSettings::maxParticles) + " = " +
+                        std::to_string(emitter.maxParticles) + " is less than one layer of " +
+                        std::to_string(nozzle.particlesPerLayer()) +
                         " particles; it emits nothing");
         }
     }
@@ -245,7 +249,8 @@ private:
             if (body.shape == "cylinder")
                 tooSmall(name(&RigidBodySettings::height), body.height);
             if (body.shape == "mesh" && body.mesh.empty())
-                error(label + ".mesh is empty; shape \"mesh\" needs a mesh file");
+                error(label + "." + name(&RigidBodySettings::mesh) +
+                      " is empty; shape \"mesh\" needs a mesh file");
         }
     }
 
@@ -299,21 +304,22 @@ private:
     void checkKeyframes() {
         for (std::size_t i = 0; i < scene_.keyframes.size(); ++i) {
             const BodyKeyframe& key = scene_.keyframes[i];
-            const std::string label = "keyframes[" + std::to_string(i) + "]";
+            const std::string bodyKey = SceneSchema::keyOf(&BodyKeyframe::body, i);
             const RigidBodySettings* body = bodyNamed(key.body);
             if (!body) {
-                error(label + ".body = " + ParameterCodec::formatValue(key.body) +
+                error(bodyKey + " = " + ParameterCodec::formatValue(key.body) +
                       " names no body; expected the name of a kinematic body");
                 continue;
             }
             if (body->motion != "kinematic")
-                error(label + ".body = " + ParameterCodec::formatValue(key.body) + " is " +
+                error(bodyKey + " = " + ParameterCodec::formatValue(key.body) + " is " +
                       body->motion + "; keyframes move kinematic bodies only");
             for (std::size_t j = 0; j < i; ++j)
                 if (scene_.keyframes[j].body == key.body &&
                     std::abs(scene_.keyframes[j].time - key.time) < kTolerance)
-                    error(label + ".time = " + number(key.time) + " s repeats keyframes[" +
-                          std::to_string(j) + "] of the same body; times must differ");
+                    error(SceneSchema::keyOf(&BodyKeyframe::time, i) + " = " + number(key.time) +
+                          " s repeats keyframes[" + std::to_string(j) +
+                          "] of the same body; times must differ");
         }
     }
 

@@ -45,8 +45,9 @@ private Q_SLOTS:
     void containerNeedsMinBelowMax() {
         Scene scene = validScene();
         scene.container.min.z() = 1.0;
-        QCOMPARE(validationError(scene),
-                 std::string("tank.json: container: min.z = 1 must be less than max.z = 1"));
+        QCOMPARE(
+            validationError(scene),
+            std::string("tank.json: container.min.z = 1 must be less than container.max.z = 1"));
     }
 
     void needsAFluidBlock() {
