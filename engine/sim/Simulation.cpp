@@ -256,37 +256,39 @@ void Simulation::emitInflow(double from, double to) {
 
 void Simulation::checkHealth(const StepReport& report, double timeToFrameEnd, int frame,
                              std::size_t lost, std::size_t particlesAtStart) const {
-    const std::string where =
-        "frame " + std::to_string(frame) + " (t = " + std::to_string(state_.time) + " s): ";
-    const std::string cflFactor = SceneSchema::keyOf(&SolverSettings::cflFactor);
-    const std::string maxSpeed = SceneSchema::keyOf(&SolverSettings::maxSpeed);
+    // Called after every step: the messages and the keys they name are made only on a failure.
+    const auto where = [&] {
+        return "frame " + std::to_string(frame) + " (t = " + std::to_string(state_.time) + " s): ";
+    };
+    const auto cflFactor = [] { return SceneSchema::keyOf(&SolverSettings::cflFactor); };
+    const auto maxSpeed = [] { return SceneSchema::keyOf(&SolverSettings::maxSpeed); };
     if (report.nonFinite)
         throw Error(ErrorKind::SimulationBlowUp,
-                    where +
+                    where() +
                         "the simulation produced NaN or infinite values. Likely cause: a time "
                         "step too large for the forces (lower " +
-                        cflFactor + ") or bodies overlapping the water at t = 0.");
+                        cflFactor() + ") or bodies overlapping the water at t = 0.");
     if (report.maxDensityDeviation > scene_.solver.maxDensityError)
         throw Error(ErrorKind::SimulationBlowUp,
-                    where + "density error " + percent(report.maxDensityDeviation) + " exceeds " +
+                    where() + "density error " + percent(report.maxDensityDeviation) + " exceeds " +
                         SceneSchema::keyOf(&SolverSettings::maxDensityError) + " (" +
                         percent(scene_.solver.maxDensityError) + "). Likely cause: the water " +
                         "moves at " + std::to_string(report.maxSpeed) + " m/s, too fast for " +
-                        maxSpeed + " = " + std::to_string(scene_.solver.maxSpeed) +
-                        " m/s (raise it), or " + cflFactor + " is too large.");
+                        maxSpeed() + " = " + std::to_string(scene_.solver.maxSpeed) +
+                        " m/s (raise it), or " + cflFactor() + " is too large.");
     if (lost > std::max<std::size_t>(10, std::size_t(kMaxLostShare * particlesAtStart)))
         throw Error(ErrorKind::SimulationBlowUp,
-                    where + std::to_string(lost) +
+                    where() + std::to_string(lost) +
                         " particles left the domain in one frame. Likely cause: the water "
                         "exploded (lower " +
-                        cflFactor + ", raise " + maxSpeed + ") or " +
+                        cflFactor() + ", raise " + maxSpeed() + ") or " +
                         SceneSchema::keyOf(&ContainerSettings::headroom) +
                         " is too small for the splash.");
     // A step shortened to land on the frame time may be short; one the forces made short is not.
     if (report.timeStep < kMinTimeStep && report.timeStep < 0.5 * timeToFrameEnd)
         throw Error(ErrorKind::SimulationBlowUp,
-                    where + "the time step collapsed below 1 ns: accelerations are exploding. "
-                            "Likely cause: overlapping bodies or particles at t = 0.");
+                    where() + "the time step collapsed below 1 ns: accelerations are exploding. "
+                              "Likely cause: overlapping bodies or particles at t = 0.");
 }
 
 } // namespace airtrap
