@@ -1,6 +1,7 @@
 // The parameter declarations: complete, taking Scene.h's defaults, addressable by dotted path and
 // by the field they are bound to.
 #include "scene/ParameterCodec.h"
+#include "scene/SceneJson.h"
 #include "scene/SceneSchema.h"
 #include "support/TestMain.h"
 #include "unit/SceneTestSupport.h"
@@ -61,21 +62,25 @@ private Q_SLOTS:
         }
     }
 
-    void defaultsMatchTheSceneStructs() {
-        Scene scene;
-        scene.fluidBlocks.resize(1);
-        scene.obstacles.resize(1);
-        scene.emitters.resize(1);
-        scene.bodies.resize(1);
-        scene.keyframes.resize(1);
+    void aFileWithoutAKeyGetsTheStructsDefault() {
+        // A file naming no parameter, one empty element in each array section: the reader fills
+        // every value from the declarations, which must give what Scene.h's structs hold.
+        nlohmann::json json = {{"format_version", Scene::kFormatVersion}};
+        Scene expected;
+        for (const SchemaSection& section : SceneSchema::sections())
+            if (section.isArray) {
+                json[section.key] = nlohmann::json::array({nlohmann::json::object()});
+                section.resize(expected, 1);
+            }
+        const Scene read = sceneFromJson(json, "defaults.json");
         for (const SchemaSection& section : SceneSchema::sections())
             for (const BoundParameter& parameter : section.parameters) {
                 const std::string path = SceneSchema::pathOf(section, 0, parameter.declaration.key);
-                const ParameterValue value = parameter.get(scene, 0);
-                QVERIFY2(value == parameter.declaration.defaultValue,
-                         (path + ": Scene.h has " + ParameterCodec::formatValue(value) +
-                          ", the declaration " +
-                          ParameterCodec::formatValue(parameter.declaration.defaultValue))
+                const ParameterValue value = parameter.get(read, 0);
+                QVERIFY2(value == parameter.get(expected, 0),
+                         (path + ": read as " + ParameterCodec::formatValue(value) +
+                          ", Scene.h has " +
+                          ParameterCodec::formatValue(parameter.get(expected, 0)))
                              .c_str());
             }
     }
