@@ -138,6 +138,8 @@ Simulation::Advance Baker::bakeFrame(Simulation& simulation, FrameCache& cache,
             onProgress_(progress);
     };
     const Simulation::Advance advance = simulation.advanceFrame(interrupter, onStep);
+    for (const std::string& notice : simulation.takeNotices())
+        report(notice);
     if (advance == Simulation::Advance::FrameDone) {
         cache.writeFrame(simulation.state(), simulation.lastFrameStats());
         if (onFrame_)

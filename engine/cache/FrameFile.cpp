@@ -5,6 +5,7 @@
 #include "cache/BubbleSurroundingsChunk.h"
 #include "cache/ByteReader.h"
 #include "cache/ByteWriter.h"
+#include "cache/PressureSolveChunk.h"
 #include "cache/RigidBodyRecord.h"
 #include "core/Error.h"
 
@@ -328,6 +329,7 @@ void readChunks(const std::vector<Chunk>& chunks, FrameData& frame, const std::s
     int bubbleChunks = 0;
     int surfacedChunks = 0;
     const Chunk* surroundings = nullptr;
+    const Chunk* pressureSolve = nullptr;
     for (const Chunk& chunk : chunks) {
         if (chunk.tag == kStateTag) {
             particleCount = readStateChunk(chunk, frame.state, path);
@@ -356,6 +358,10 @@ void readChunks(const std::vector<Chunk>& chunks, FrameData& frame, const std::s
             if (surroundings)
                 corruptFrame(path, "more than one BSUR chunk");
             surroundings = &chunk;
+        } else if (chunk.tag == PressureSolveChunk::kTag) {
+            if (pressureSolve)
+                corruptFrame(path, "more than one PSOL chunk");
+            pressureSolve = &chunk;
         }
     }
     // After the loop: the surroundings belong to the bubbles of BUBL, wherever it stands.
@@ -367,6 +373,9 @@ void readChunks(const std::vector<Chunk>& chunks, FrameData& frame, const std::s
                                std::to_string(stateChunks) + " and " + std::to_string(statsChunks));
     checkAttributes(attributes, particleCount, path);
     fillParticles(frame.state.fluid, attributes, particleCount);
+    if (pressureSolve)
+        PressureSolveChunk::read(pressureSolve->data, pressureSolve->size, path,
+                                 frame.state.fluid.size(), frame.state.warmStart, frame.stats);
 }
 
 } // namespace
@@ -407,6 +416,11 @@ std::vector<std::uint8_t> encodeFrame(const SimulationState& state, const FrameS
         writeBubbleChunk(out, state, stats);
     if (!state.bubbles.empty())
         writeBubbleSurroundingsChunk(out, state.bubbles);
+    if (PressureSolveChunk::needed(state.warmStart, stats)) {
+        const std::size_t at = beginChunk(out, PressureSolveChunk::kTag);
+        PressureSolveChunk::write(out, state.warmStart, stats);
+        endChunk(out, at);
+    }
     writeHeader(bytes, state.frame);
     return bytes;
 }

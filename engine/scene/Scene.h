@@ -11,8 +11,10 @@
 
 namespace airtrap {
 
-//! WCSPH settings (paper §3.1, docs/SCENE_FORMAT.md `solver`).
+//! The water's solver (docs/SCENE_FORMAT.md `solver`): the paper's weakly compressible SPH
+//! (§3.1) or divergence-free SPH (docs/METHOD.md "Water: divergence-free SPH").
 struct SolverSettings {
+    std::string method = "wcsph";  //!< "wcsph" or "dfsph"
     double particleSpacing = 0.02; //!< m, initial distance between water particles
     double supportFactor = 2.0;    //!< kernel support radius = supportFactor × spacing
     double restDensity = 1000.0;   //!< kg/m³, ρ₀
@@ -24,6 +26,16 @@ struct SolverSettings {
     int shepardInterval = 30;      //!< steps between Shepard density re-initialisations (0 = off)
     double maxDensityError = 0.2; //!< stop the bake when |ρ/ρ₀ − 1| exceeds this (blow-up guard)
     Vec3d gravity = Vec3d(0.0, -9.81, 0.0); //!< m/s²
+    // Divergence-free SPH only.
+    double densityErrorTarget = 0.0001;   //!< average |ρ/ρ₀ − 1| the density solve stops at
+    double divergenceErrorTarget = 0.001; //!< average Δt·(Dρ/Dt)/ρ₀ the divergence solve stops at
+    int minIterations = 2;                //!< per solve
+    int maxIterations = 100;              //!< per solve
+    double flowCflFactor = 0.4;           //!< λ in Δt = λ Δx / |v|max
+    double minTimeStep = 0.0001;          //!< s
+    double maxTimeStep = 0.005;           //!< s
+
+    bool divergenceFree() const { return method == "dfsph"; }
 };
 
 //! Frame range and rate of the bake. Frame 1 is the initial state at t = 0; frame n is at

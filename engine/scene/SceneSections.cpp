@@ -59,8 +59,19 @@ SchemaSection topLevelSection() {
 
 SchemaSection solverSection() {
     return objectSection(
-        "solver", "Solver", "Weakly compressible SPH (WCSPH) settings.",
-        {bind<SolverAccess>({.key = "particle_spacing",
+        "solver", "Solver",
+        "The water's solver: weakly compressible SPH (WCSPH, the paper's) or divergence-free SPH "
+        "(DFSPH).",
+        {bind<SolverAccess>({.key = "method",
+                             .label = "Method",
+                             .help = "wcsph: weakly compressible, a step limited by the speed of "
+                                     "sound (10 × max_speed). dfsph: divergence-free, "
+                                     "incompressible to density_error, a step limited only by "
+                                     "the flow's speed; several times faster to a simulated "
+                                     "second.",
+                             .choices = {"wcsph", "dfsph"}},
+                            &SolverSettings::method),
+         bind<SolverAccess>({.key = "particle_spacing",
                              .label = "Particle spacing",
                              .unit = "m",
                              .minimum = 0.001,
@@ -138,7 +149,57 @@ SchemaSection solverSection() {
                              .minimum = -100.0,
                              .maximum = 100.0,
                              .help = "Gravitational acceleration; y is up."},
-                            &SolverSettings::gravity)});
+                            &SolverSettings::gravity),
+         bind<SolverAccess>({.key = "density_error",
+                             .label = "Density error (DFSPH)",
+                             .minimum = 1e-6,
+                             .maximum = 0.05,
+                             .help = "Average compression |ρ/ρ₀ − 1| the density solve iterates "
+                                     "down to (0.0001 = 0.01 %)."},
+                            &SolverSettings::densityErrorTarget),
+         bind<SolverAccess>({.key = "divergence_error",
+                             .label = "Divergence error (DFSPH)",
+                             .minimum = 1e-5,
+                             .maximum = 0.1,
+                             .help = "Average compression rate Δt·(Dρ/Dt)/ρ₀ the divergence "
+                                     "solve iterates down to (0.001 = 0.1 %)."},
+                            &SolverSettings::divergenceErrorTarget),
+         bind<SolverAccess>({.key = "min_iterations",
+                             .label = "Minimum iterations (DFSPH)",
+                             .minimum = 0,
+                             .maximum = 100,
+                             .help = "Iterations each solve takes even when already converged."},
+                            &SolverSettings::minIterations),
+         bind<SolverAccess>({.key = "max_iterations",
+                             .label = "Maximum iterations (DFSPH)",
+                             .minimum = 1,
+                             .maximum = 10000,
+                             .help = "Iterations after which a solve gives up for the step; the "
+                                     "bake stops when that happens many steps in a row."},
+                            &SolverSettings::maxIterations),
+         bind<SolverAccess>({.key = "flow_cfl_factor",
+                             .label = "Flow CFL factor (DFSPH)",
+                             .minimum = 0.05,
+                             .maximum = 1.0,
+                             .help = "λ in the time step Δt = λ Δx / |v|max: the fastest "
+                                     "particle moves λ spacings per step."},
+                            &SolverSettings::flowCflFactor),
+         bind<SolverAccess>({.key = "min_time_step",
+                             .label = "Minimum time step (DFSPH)",
+                             .unit = "s",
+                             .minimum = 1e-6,
+                             .maximum = 0.1,
+                             .help = "The step never gets shorter than this (except to land on "
+                                     "a frame); a flow that would need less is reported."},
+                            &SolverSettings::minTimeStep),
+         bind<SolverAccess>({.key = "max_time_step",
+                             .label = "Maximum time step (DFSPH)",
+                             .unit = "s",
+                             .minimum = 1e-5,
+                             .maximum = 0.1,
+                             .help = "The step never gets longer than this, however slow the "
+                                     "flow."},
+                            &SolverSettings::maxTimeStep)});
 }
 
 SchemaSection framesSection() {

@@ -70,6 +70,7 @@ public:
         checkBodyNames();
         checkKeyframes();
         checkBubbles();
+        checkPressureSolve();
         checkSurfaceMesh();
         checkSubgridBubbles();
         return issues_;
@@ -269,6 +270,19 @@ private:
                   " m/s exceeds " + key(&SolverSettings::maxSpeed) + " = " +
                   number(scene_.solver.maxSpeed) + " m/s; raise " + key(&SolverSettings::maxSpeed) +
                   " or lower the cap");
+    }
+
+    void checkPressureSolve() {
+        const SolverSettings& solver = scene_.solver;
+        if (solver.minIterations > solver.maxIterations)
+            error(key(&SolverSettings::minIterations) + " = " +
+                  std::to_string(solver.minIterations) + " exceeds " +
+                  key(&SolverSettings::maxIterations) + " = " +
+                  std::to_string(solver.maxIterations));
+        if (solver.minTimeStep > solver.maxTimeStep)
+            error(key(&SolverSettings::minTimeStep) + " = " + number(solver.minTimeStep) +
+                  " s exceeds " + key(&SolverSettings::maxTimeStep) + " = " +
+                  number(solver.maxTimeStep) + " s");
     }
 
     void checkSurfaceMesh() {

@@ -4,6 +4,7 @@
 #include "core/RunBeside.h"
 #include "scene/SceneSchema.h"
 #include "sim/SceneSetup.h"
+#include "sph/DfsphSolver.h"
 #include "sph/WcsphSolver.h"
 
 #include <chrono>
@@ -22,6 +23,22 @@ constexpr double kMinTimeStep = 1e-9;
 //! A frame that loses more than this share of its particles through the domain's walls is a
 //! blow-up, not a splash.
 constexpr double kMaxLostShare = 0.05;
+//! Density solves in a row that may stop at max_iterations before the bake stops: a few are a
+//! burst (an impact), this many mean the step cannot hold the water incompressible.
+constexpr int kMaxUnconvergedInARow = 50;
+
+std::unique_ptr<PressureSolver> makePressureSolver(const Scene& scene) {
+    if (scene.solver.divergenceFree())
+        return std::make_unique<DfsphSolver>(scene.solver, scene.domain());
+    return std::make_unique<WcsphSolver>(scene.solver, scene.domain());
+}
+
+std::string formatVector(const Vec3f& x) {
+    std::ostringstream out;
+    out.precision(3);
+    out << "(" << x.x() << ", " << x.y() << ", " << x.z() << ") m";
+    return out.str();
+}
 
 FrameStats measure(const ParticleSet& fluid) {
     FrameStats stats;
@@ -74,10 +91,11 @@ std::string percent(double fraction) {
 
 Simulation::Simulation(Scene scene, SimulationState resumeFrom)
     : scene_(std::move(scene)), state_(std::move(resumeFrom)),
-      water_(std::make_unique<WcsphSolver>(scene_.solver, scene_.domain())),
+      water_(makePressureSolver(scene_)),
       bodies_(SceneSetup::buildBodies(scene_), SceneSetup::sceneryCount(scene_), scene_.solver,
               scene_.bubbles, water_->kernel()) {
     water_->placeBoundary(bodies_.bodies());
+    water_->restoreWarmStart(state_.warmStart);
     for (const InflowEmitterSettings& settings : scene_.emitters)
         emitters_.emplace_back(settings, scene_.solver.particleSpacing, scene_.solver.restDensity);
     if (scene_.bubbles.enabled) {
@@ -104,6 +122,8 @@ Simulation::Advance Simulation::advanceFrame(Interrupter& interrupter, const Ste
     std::uint64_t steps = 0;
     phases_.reset();
     frameBubbles_ = {};
+    PressureSolveStats solve;
+    double fastestInFrame = 0.0;
     const auto wallStart = std::chrono::steady_clock::now();
 
     while (state_.time < target) {
@@ -113,7 +133,10 @@ Simulation::Advance Simulation::advanceFrame(Interrupter& interrupter, const Ste
         // domain's walls.
         lost += report.removedParticles;
         ++steps;
+        fastestInFrame = std::max(fastestInFrame, report.maxSpeed);
         checkHealth(report, remaining, nextFrame, lost, particlesAtStart);
+        if (scene_.solver.divergenceFree())
+            tallySolve(report, nextFrame, solve);
         const double fraction = (state_.time - start) / (target - start);
         if (onStep)
             onStep(fraction);
@@ -122,7 +145,10 @@ Simulation::Advance Simulation::advanceFrame(Interrupter& interrupter, const Ste
     }
 
     state_.frame = nextFrame;
+    state_.warmStart = water_->warmStart();
+    noteFrame(nextFrame, lost, fastestInFrame, solve);
     lastFrameStats_ = measure(state_.fluid);
+    lastFrameStats_.pressureSolve = solve;
     lastFrameStats_.bubbles = frameBubbles_;
     lastFrameStats_.stepsInFrame = steps;
     lastFrameStats_.wallSeconds =
@@ -162,13 +188,18 @@ StepReport Simulation::takeStep(double timeToFrameEnd, double frameEnd) {
     else
         sortWater();
     inPhase(phases_, StepPhases::Bodies, [&] { water.pairMovingBoundary(); });
-    report.timeStep =
-        water.chooseTimeStep(report.maxSpeed, state_.lastMaxAcceleration, timeToFrameEnd);
+    // DFSPH only (empty for WCSPH): densities by summation and the solves' factors, then the
+    // velocity field made divergence-free and the non-pressure forces, which set Δt.
+    inPhase(phases_, StepPhases::Density, [&] { water.prepareDensities(fluid, report); });
+    inPhase(phases_, StepPhases::DivergenceSolve,
+            [&] { water.solveDivergence(state_.lastTimeStep, report); });
+    water.chooseTimeStep(state_.lastMaxAcceleration, timeToFrameEnd, report);
 
-    // 2. Particle interactions: densities by continuity (eq. 2) and pressures (eq. 3), then the
-    //    momentum equation (eq. 1) with the boundary force's contact impulses (eq. 4); beside the
-    //    forces, which only read the water too, the water around the bubbles measured for their
-    //    forces and deletion rules.
+    // 2. Particle interactions. WCSPH: densities by continuity (eq. 2) and pressures (eq. 3),
+    //    then the momentum equation (eq. 1) with the boundary force's contact impulses (eq. 4).
+    //    DFSPH: the density solve, then the contact impulses. Beside the forces, which only read
+    //    the water too, the water around the bubbles measured for their forces and deletion
+    //    rules.
     inPhase(phases_, StepPhases::Density,
             [&] { water.computeDensities(fluid, state_.steps, report.timeStep, report); });
     const auto forces = timed(phases_, StepPhases::Forces,
@@ -247,6 +278,74 @@ void Simulation::createBubbles(int frame) {
     const BubbleSpawner::Bubbles bubbles{state_.bubbles, state_.nextBubbleId};
     frameBubbles_.created += bubbleSpawner_->spawn(bubbles, state_.steps, water, bodies_.solids(),
                                                    frame, limit - frameBubbles_.created);
+}
+
+void Simulation::tallySolve(const StepReport& report, int frame, PressureSolveStats& solve) {
+    ++solve.steps;
+    solve.divergenceIterations += std::uint64_t(report.divergenceIterations);
+    solve.densityIterations += std::uint64_t(report.densityIterations);
+    solve.meanDensityError += (report.densityError - solve.meanDensityError) / double(solve.steps);
+    solve.maxDensityError = std::max(solve.maxDensityError, report.densityError);
+    if (report.stepAtMinimum && !warnedMinimumStep_) {
+        warnedMinimumStep_ = true;
+        notices_.push_back(
+            "frame " + std::to_string(frame) + ": the water reached " +
+            std::to_string(report.maxSpeed) + " m/s at " + formatVector(report.fastestAt) +
+            ", which asks for a step below " + SceneSchema::keyOf(&SolverSettings::minTimeStep) +
+            " = " + std::to_string(scene_.solver.minTimeStep) +
+            " s; the step is held there, so the fastest water moves more than " +
+            SceneSchema::keyOf(&SolverSettings::flowCflFactor) +
+            " spacings per step (said once per bake)");
+    }
+    if (report.densityConverged) {
+        unconvergedInARow_ = 0;
+        return;
+    }
+    ++solve.unconvergedSteps;
+    if (++unconvergedInARow_ < kMaxUnconvergedInARow)
+        return;
+    throw Error(ErrorKind::SimulationBlowUp,
+                "frame " + std::to_string(frame) + " (t = " + std::to_string(state_.time) +
+                    " s, step " + std::to_string(state_.steps) + "): the density solve has " +
+                    "stopped at " + SceneSchema::keyOf(&SolverSettings::maxIterations) + " = " +
+                    std::to_string(scene_.solver.maxIterations) + " for " +
+                    std::to_string(kMaxUnconvergedInARow) +
+                    " steps in a row, reaching an average density error of " +
+                    percent(report.densityError) + " where " +
+                    SceneSchema::keyOf(&SolverSettings::densityErrorTarget) + " asks for " +
+                    percent(scene_.solver.densityErrorTarget) +
+                    ". Likely cause: steps too long for the flow (lower " +
+                    SceneSchema::keyOf(&SolverSettings::flowCflFactor) + " or " +
+                    SceneSchema::keyOf(&SolverSettings::maxTimeStep) + ") or too few iterations.");
+}
+
+void Simulation::noteFrame(int frame, std::size_t lost, double fastest,
+                           const PressureSolveStats& solve) {
+    const std::string where = "frame " + std::to_string(frame) + ": ";
+    if (lost > 0)
+        notices_.push_back(where + std::to_string(lost) +
+                           " particles left the domain and were removed");
+    if (solve.unconvergedSteps > 0)
+        notices_.push_back(where + "the density solve stopped at " +
+                           SceneSchema::keyOf(&SolverSettings::maxIterations) + " in " +
+                           std::to_string(solve.unconvergedSteps) + " of " +
+                           std::to_string(solve.steps) + " steps (largest density error " +
+                           percent(solve.maxDensityError) + ")");
+    if (!scene_.solver.divergenceFree() && fastest > scene_.solver.maxSpeed &&
+        !warnedMaxSpeed_) {
+        warnedMaxSpeed_ = true;
+        notices_.push_back(where + "the water reached " + std::to_string(fastest) +
+                           " m/s, above " + SceneSchema::keyOf(&SolverSettings::maxSpeed) + " = " +
+                           std::to_string(scene_.solver.maxSpeed) +
+                           " m/s on which the speed of sound is based, so the water compresses "
+                           "more than the method's 1 %; raise it (said once per bake)");
+    }
+}
+
+std::vector<std::string> Simulation::takeNotices() {
+    std::vector<std::string> taken;
+    taken.swap(notices_);
+    return taken;
 }
 
 void Simulation::emitInflow(double from, double to) {

@@ -16,6 +16,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace airtrap {
@@ -47,6 +48,11 @@ public:
     //! benchmarks and tests; the state's time advances but no frame is completed.
     StepReport step(double maxTimeStep);
 
+    //! What the bake should tell the user since the last call: particles that left the domain,
+    //! solves that did not converge, a step held at its minimum, water faster than WCSPH's
+    //! max_speed. Each names the frame.
+    std::vector<std::string> takeNotices();
+
     //! Statistics of the last completed frame (or of the initial state).
     const FrameStats& lastFrameStats() const { return lastFrameStats_; }
 
@@ -61,6 +67,11 @@ private:
     //! Throws Error(SimulationBlowUp) naming the frame and the likely cause.
     void checkHealth(const StepReport& report, double timeToFrameEnd, int frame, std::size_t lost,
                      std::size_t particlesAtStart) const;
+    //! Adds a DFSPH step's solves to the frame's; throws Error(SimulationBlowUp) when the density
+    //! solve has not converged for many steps in a row.
+    void tallySolve(const StepReport& report, int frame, PressureSolveStats& solve);
+    //! The notices of a finished frame.
+    void noteFrame(int frame, std::size_t lost, double fastest, const PressureSolveStats& solve);
     //! Adds the inflow layers due during the step that just went from `from` to `to`.
     void emitInflow(double from, double to);
     //! One step of at most `timeToFrameEnd` seconds, in the paper's Table 1 order: neighbours,
@@ -88,6 +99,10 @@ private:
     std::optional<BubbleSpawner> bubbleSpawner_;
     BubbleTally frameBubbles_; //!< created and deleted during the frame under way
     int steppedFrame_ = -1;    //!< frame whose time step() last stepped in
+    std::vector<std::string> notices_;
+    int unconvergedInARow_ = 0;
+    bool warnedMinimumStep_ = false;
+    bool warnedMaxSpeed_ = false;
 };
 
 } // namespace airtrap

@@ -4,6 +4,7 @@
 #include "bubbles/BubbleTally.h"
 #include "rigid/RigidBodyState.h"
 #include "sph/ParticleSet.h"
+#include "sph/PressureWarmStart.h"
 
 #include <cstdint>
 #include <vector>
@@ -26,6 +27,8 @@ struct SimulationState {
     std::uint32_t nextBubbleId = 0; //!< also the number of bubbles created so far
     //! Bubbles deleted so far, per rule (`created` unused: nextBubbleId counts them).
     BubbleTally bubblesDeleted;
+    //! Where a divergence-free solver's next step starts from (empty for WCSPH).
+    PressureWarmStart warmStart;
 
     bool operator==(const SimulationState& other) const = default;
 };

@@ -15,7 +15,9 @@ public:
     //! BubbleForces: measuring the water around each bubble for its drag, steering and deletion
     //! rules, beside Forces (applying them is a few operations per bubble, inside Bodies).
     //! BubblePockets: finding air pockets and creating bubbles, every bubbles.pocket_interval
-    //! steps. BubbleDeletion: the deletion rules, after every step.
+    //! steps. BubbleDeletion: the deletion rules, after every step. With DFSPH, Density covers
+    //! the densities by summation, the α factors and the density solve, DivergenceSolve the
+    //! divergence solve and the non-pressure forces, and Forces the contact impulses.
     enum Phase {
         Neighbours,
         Density,
@@ -25,12 +27,14 @@ public:
         BubbleForces,
         BubblePockets,
         BubbleDeletion,
+        DivergenceSolve,
         Count
     };
 
     static constexpr std::array<std::string_view, Count> kNames = {
         "neighbours",    "density",        "forces",         "bodies",
-        "integrate",     "bubble_forces",  "bubble_pockets", "bubble_deletion"};
+        "integrate",     "bubble_forces",  "bubble_pockets", "bubble_deletion",
+        "divergence_solve"};
 
     //! Times one phase for as long as it lives.
     class Scope {

@@ -1,5 +1,7 @@
 #include "sph/InteractionPass.h"
 
+#include "sph/BoundaryNeighbors.h"
+
 #include <algorithm>
 #include <cmath>
 #include <tbb/blocked_range.h>
@@ -15,7 +17,7 @@ constexpr std::size_t kGrain = 512;
 
 InteractionPass::InteractionPass(const CubicSplineKernel& kernel,
                                  const InteractionConstants& constants)
-    : kernel_(kernel), constants_(constants),
+    : kernel_(kernel), constants_(constants), contact_(constants.mass),
       radius2_(kernel.supportRadius() * kernel.supportRadius()),
       // Keeps μ of the artificial viscosity finite for coincident particles (0.01h², Monaghan).
       eta2_(0.01f * kernel.smoothingLength() * kernel.smoothingLength()) {}
@@ -42,33 +44,11 @@ void InteractionPass::densityRates(const InteractionInputs& in, std::vector<floa
     });
 }
 
-template <class Visit>
-void InteractionPass::forEachBoundaryNeighbor(std::size_t i, const Vec3f& xi,
-                                              const BoundaryModel& boundary, Visit&& visit) const {
-    const auto visitWithin = [&](const BoundaryLayer& layer, std::uint32_t b) {
-        const Vec3f d = xi - layer.positions()[b];
-        const float r2 = d.squaredNorm();
-        if (r2 < radius2_)
-            visit(layer, b, d, r2);
-    };
-    const BoundaryLayer& fixed = boundary.staticLayer();
-    if (fixed.size() > 0 && fixed.reaches(xi))
-        fixed.grid().forEachNeighborRange(xi, kernel_.supportRadius(),
-                                          [&](std::uint32_t begin, std::uint32_t end) {
-                                              for (std::uint32_t b = begin; b < end; ++b)
-                                                  visitWithin(fixed, b);
-                                          });
-    const BoundaryLayer& moving = boundary.movingLayer();
-    if (moving.size() > 0)
-        for (std::uint32_t b : boundary.movingPairs().boundaryNear(i))
-            visitWithin(moving, b);
-}
-
 float InteractionPass::boundaryDensityRate(std::size_t i, const InteractionInputs& in) const {
     const Vec3f vi = in.fluid.velocities[i];
     float rate = 0.0f;
     forEachBoundaryNeighbor(
-        i, in.positions[i], in.boundary,
+        in.boundary, kernel_.supportRadius(), i, in.positions[i],
         [&](const BoundaryLayer& layer, std::uint32_t b, const Vec3f& d, float r2) {
             rate += layer.psi()[b] *
                     (vi - layer.velocities()[b]).dot(kernel_.gradientFromSquared(d, r2));
@@ -85,7 +65,7 @@ double InteractionPass::accelerations(const InteractionInputs& in, const Neighbo
         Range(0, in.fluid.size(), kGrain), 0.0,
         [&](const Range& r, double largest) {
             for (std::size_t i = r.begin(); i != r.end(); ++i) {
-                Contact contact;
+                BoundaryContact::Nearest contact;
                 Vec3f acceleration = constants_.mass * waterForce(i, in, neighbors, pressureTerms) +
                                      constants_.gravity +
                                      boundaryForce(i, in, pressureTerms[i], contact);
@@ -94,13 +74,13 @@ double InteractionPass::accelerations(const InteractionInputs& in, const Neighbo
                 largest = std::max(largest, double(acceleration.norm()));
                 Vec3f impulse = Vec3f::Zero();
                 if (contact.boundaryParticle >= 0) {
-                    impulse = contactImpulse(in.fluid.velocities[i], acceleration, contact,
-                                             in.boundary, step);
+                    impulse = contact_.impulse(in.fluid.velocities[i], acceleration, contact,
+                                               in.boundary, step);
                     acceleration += impulse / (constants_.mass * step);
                 }
                 accelerations[i] = acceleration;
                 if (contacts)
-                    recordContact(i, contact, impulse, in.boundary, *contacts);
+                    BoundaryContact::record(i, contact, impulse, in.boundary, *contacts);
             }
             return largest;
         },
@@ -140,21 +120,17 @@ Vec3f InteractionPass::waterForce(std::size_t i, const InteractionInputs& in,
 }
 
 Vec3f InteractionPass::boundaryForce(std::size_t i, const InteractionInputs& in, float pressureTerm,
-                                     Contact& contact) const {
+                                     BoundaryContact::Nearest& contact) const {
     const Vec3f xi = in.positions[i];
     const Vec3f vi = in.fluid.velocities[i];
     const float rhoi = in.fluid.densities[i];
     contact.distance2 = constants_.contactRadius * constants_.contactRadius;
     Vec3f force = Vec3f::Zero();
     forEachBoundaryNeighbor(
-        i, xi, in.boundary,
+        in.boundary, kernel_.supportRadius(), i, xi,
         [&](const BoundaryLayer& layer, std::uint32_t b, const Vec3f& d, float r2) {
             force += boundaryPairAcceleration(xi, vi, rhoi, pressureTerm, b, d, r2, layer);
-            if (r2 < contact.distance2) {
-                contact.distance2 = r2;
-                contact.layer = &layer;
-                contact.boundaryParticle = b;
-            }
+            contact.consider(layer, b, r2);
         });
     return force;
 }
@@ -174,48 +150,6 @@ Vec3f InteractionPass::boundaryPairAcceleration(const Vec3f& xi, const Vec3f& vi
     const float wallPressure =
         std::max(0.0f, pressurei + rhoi * constants_.gravity.dot(layer.positions()[b] - xi));
     return -layer.psi()[b] * (pressureTerm + wallPressure / (rhoi * rhoi) + viscosity) * grad;
-}
-
-Vec3f InteractionPass::contactImpulse(const Vec3f& velocity, const Vec3f& acceleration,
-                                      const Contact& contact, const BoundaryModel& boundary,
-                                      float dt) const {
-    const std::size_t b = static_cast<std::size_t>(contact.boundaryParticle);
-    const BoundaryLayer& layer = *contact.layer;
-    const Vec3f& normal = layer.normals()[b];
-    const Vec3f predicted = velocity + dt * acceleration - layer.velocities()[b];
-    const float normalSpeed = predicted.dot(normal);
-    if (normalSpeed >= 0.0f)
-        return Vec3f::Zero();
-    const BodyContactTerms& body = boundary.contactTerms(layer.bodyOf()[b]);
-    const Vec3d x = layer.positions()[b].cast<double>();
-    const double inverseWaterMass = 1.0 / constants_.mass;
-    const auto effectiveMass = [&](const Vec3f& direction) {
-        return 1.0 / (inverseWaterMass + body.inverseEffectiveMass(x, direction.cast<double>()));
-    };
-    const float normalImpulse =
-        static_cast<float>(-(1.0 + body.restitution) * normalSpeed * effectiveMass(normal));
-    Vec3f impulse = normalImpulse * normal;
-    const Vec3f slip = predicted - normalSpeed * normal;
-    const float slipSpeed = slip.norm();
-    if (body.friction > 0.0f && slipSpeed > 0.0f) {
-        const Vec3f tangent = slip / slipSpeed;
-        const float stopping = static_cast<float>(slipSpeed * effectiveMass(tangent));
-        impulse -= std::min(body.friction * normalImpulse, stopping) * tangent;
-    }
-    return impulse;
-}
-
-void InteractionPass::recordContact(std::size_t i, const Contact& contact, const Vec3f& impulse,
-                                    const BoundaryModel& boundary, ContactRecords& contacts) const {
-    const bool onDynamicBody =
-        contact.boundaryParticle >= 0 &&
-        boundary.contactTerms(contact.layer->bodyOf()[contact.boundaryParticle]).dynamic &&
-        impulse != Vec3f::Zero();
-    contacts.boundaryParticle[i] =
-        onDynamicBody ? static_cast<std::int32_t>(contact.boundaryParticle) : -1;
-    // Read only where a boundary particle is recorded: most of the water skips the write.
-    if (onDynamicBody)
-        contacts.impulse[i] = impulse;
 }
 
 void InteractionPass::bodyReactions(const InteractionInputs& in,

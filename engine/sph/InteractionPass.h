@@ -9,6 +9,7 @@
 // Two passes rather than one because the pressure of pass 2 must come from the density already
 // advanced with pass 1 (symplectic Euler for the pair ρ, v): with both evaluated from the same old
 // state, the scheme is forward Euler for sound waves, which grow without bound.
+#include "sph/BoundaryContact.h"
 #include "sph/BoundaryModel.h"
 #include "sph/ContactRecords.h"
 #include "sph/CubicSplineKernel.h"
@@ -63,42 +64,20 @@ public:
                        const ContactRecords& contacts, double dt, std::vector<Vec3d>& forces) const;
 
 private:
-    //! The nearest boundary particle within the contact radius, if any.
-    struct Contact {
-        const BoundaryLayer* layer = nullptr;
-        std::int64_t boundaryParticle = -1; //!< in `layer`
-        float distance2 = 0.0f;
-    };
-
-    //! Calls visit(layer, b, d, r²) for every boundary particle b within the support of sorted
-    //! water particle i at xi, d = xi − x_b: the static layer's from its grid, the moving
-    //! layer's from the step's pair list; ascending within each layer.
-    template <class Visit>
-    void forEachBoundaryNeighbor(std::size_t i, const Vec3f& xi, const BoundaryModel& boundary,
-                                 Visit&& visit) const;
     float boundaryDensityRate(std::size_t i, const InteractionInputs& in) const;
     Vec3f waterForce(std::size_t i, const InteractionInputs& in, const NeighborList& neighbors,
                      const std::vector<float>& pressureTerms) const;
     Vec3f boundaryForce(std::size_t i, const InteractionInputs& in, float pressureTerm,
-                        Contact& contact) const;
+                        BoundaryContact::Nearest& contact) const;
     //! Acceleration of water particle i (at xi, velocity vi, density rhoi, pressure term p/ρ²)
     //! from boundary particle b at offset d = xi − x_b, |d|² = r2 < support²: the pressure of
     //! the particle and of the wall plus the wall's artificial viscosity, weighted by Ψ_b.
     Vec3f boundaryPairAcceleration(const Vec3f& xi, const Vec3f& vi, float rhoi, float pressureTerm,
                                    std::size_t b, const Vec3f& d, float r2,
                                    const BoundaryLayer& layer) const;
-    //! The contact impulse J (N·s) of eq. 4 for a particle that would still approach the body
-    //! after this step: j = −(1 + ε) uₙ / (1/mᵢ + K_B(n, r)) along the normal, plus Coulomb
-    //! friction against the tangential slip, bounded by μ j. A static body has K_B = 0.
-    Vec3f contactImpulse(const Vec3f& velocity, const Vec3f& acceleration, const Contact& contact,
-                         const BoundaryModel& boundary, float dt) const;
-    //! Notes particle i's impulse when it came from a dynamic body (else −1, zero); the index is
-    //! into the moving layer, which holds every dynamic body.
-    void recordContact(std::size_t i, const Contact& contact, const Vec3f& impulse,
-                       const BoundaryModel& boundary, ContactRecords& contacts) const;
-
     CubicSplineKernel kernel_;
     InteractionConstants constants_;
+    BoundaryContact contact_;
     float radius2_;
     float eta2_;
 };

@@ -3,13 +3,14 @@
 // "The step"): the particles sorted onto the neighbour grid, the boundary particles of the rigid
 // bodies, densities, pressures and forces, the time step they allow, and the move. The bodies,
 // the bubbles and their contacts are not the solver's: the step moves them with the reactions
-// the solver reports. WcsphSolver (the paper's weakly compressible SPH) implements it; a
-// pressure solver of another kind implements the same phases.
+// the solver reports. WcsphSolver (the paper's weakly compressible SPH) and DfsphSolver
+// (divergence-free SPH) implement it; a phase one of them does not have is empty there.
 #include "rigid/RigidBody.h"
 #include "sph/BoundaryModel.h"
 #include "sph/CubicSplineKernel.h"
 #include "sph/NeighborGrid.h"
 #include "sph/ParticleSet.h"
+#include "sph/PressureWarmStart.h"
 #include "sph/StepReport.h"
 
 #include <cstdint>
@@ -32,11 +33,18 @@ public:
     virtual void placeBoundary(const std::vector<RigidBody>& bodies) = 0;
     //! Finds the water near the moving bodies' boundary particles on this step's grid.
     virtual void pairMovingBoundary() = 0;
-    //! s, the step the water allows, at most `timeToFrameEnd`, so a frame's end is met exactly.
-    virtual double chooseTimeStep(double maxSpeed, double lastMaxAcceleration,
-                                  double timeToFrameEnd) const = 0;
+    //! DFSPH: the densities by summation and the factors of both solves, on this step's grid.
+    virtual void prepareDensities(ParticleSet& fluid, StepReport& report) = 0;
+    //! DFSPH: makes the velocity field divergence-free, then the non-pressure accelerations and
+    //! the speed they lead to (report.maxSpeed). `lastTimeStep` (s; 0 before the first step)
+    //! scales the solve's error.
+    virtual void solveDivergence(double lastTimeStep, StepReport& report) = 0;
+    //! report.timeStep, the step the water allows after report.maxSpeed, at most
+    //! `timeToFrameEnd`, so a frame's end is met exactly.
+    virtual void chooseTimeStep(double lastMaxAcceleration, double timeToFrameEnd,
+                                StepReport& report) const = 0;
     //! The densities (and what the pressures need of them) for a step of `dt` s; `step` counts
-    //! the steps since t = 0.
+    //! the steps since t = 0. DFSPH: the density solve.
     virtual void computeDensities(ParticleSet& fluid, std::uint64_t step, double dt,
                                   StepReport& report) = 0;
     //! Every particle's acceleration: pressure, viscosity, boundary forces and gravity. Only
@@ -61,6 +69,13 @@ public:
     virtual const PositionArrays& sortedPositions() const = 0;
     //! Heap bytes held by the solver's grids and scratch arrays (not the particle state).
     virtual std::size_t allocatedBytes() const = 0;
+    //! Pa, of particle i of the water as the last step left it.
+    virtual float pressure(const ParticleSet& fluid, std::size_t i) const = 0;
+
+    //! What the next step's solves start from, in the water's order (empty for WCSPH).
+    virtual PressureWarmStart warmStart() const = 0;
+    //! Continues from a cached state's warm start.
+    virtual void restoreWarmStart(const PressureWarmStart& warmStart) = 0;
 };
 
 } // namespace airtrap

@@ -1,13 +1,15 @@
 #include "sph/WcsphSolver.h"
 
 #include "core/Error.h"
+#include "core/ParallelMax.h"
+#include "sph/CellSort.h"
+#include "sph/FrameLanding.h"
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_reduce.h>
 
 namespace airtrap {
 
@@ -16,19 +18,6 @@ namespace {
 constexpr std::size_t kParticleGrain = 1024;
 
 using Range = tbb::blocked_range<std::size_t>;
-
-//! Maximum over [0, n) of f(i); max is exact in any order, so the result is deterministic.
-template <class F>
-double parallelMax(std::size_t n, F&& f) {
-    return tbb::parallel_reduce(
-        Range(0, n, kParticleGrain), 0.0,
-        [&](const Range& r, double best) {
-            for (std::size_t i = r.begin(); i != r.end(); ++i)
-                best = std::max(best, static_cast<double>(f(i)));
-            return best;
-        },
-        [](double a, double b) { return std::max(a, b); });
-}
 
 } // namespace
 
@@ -95,26 +84,7 @@ void WcsphSolver::placeBoundary(const std::vector<RigidBody>& bodies) {
 }
 
 void WcsphSolver::sortByCell(ParticleSet& fluid, StepReport& report) {
-    grid_.build(fluid.positions);
-    report.removedParticles = grid_.outsideCount();
-    const auto& order = grid_.order();
-    const std::size_t n = order.size();
-    reorderScratch_.resize(n);
-    sortedPositions_.resize(n);
-    // The gather also finds the largest speed, which the time step needs, in the same sweep.
-    report.maxSpeed = parallelMax(n, [&](std::size_t s) {
-        const std::uint32_t from = order[s];
-        const Vec3f& x = fluid.positions[from];
-        reorderScratch_.positions[s] = x;
-        sortedPositions_.x[s] = x.x();
-        sortedPositions_.y[s] = x.y();
-        sortedPositions_.z[s] = x.z();
-        reorderScratch_.velocities[s] = fluid.velocities[from];
-        reorderScratch_.densities[s] = fluid.densities[from];
-        reorderScratch_.ids[s] = fluid.ids[from];
-        return reorderScratch_.velocities[s].norm();
-    });
-    std::swap(fluid, reorderScratch_);
+    airtrap::sortByCell(grid_, fluid, reorderScratch_, sortedPositions_, report);
 }
 
 double WcsphSolver::advanceDensities(ParticleSet& fluid, double dt) {
@@ -134,18 +104,13 @@ double WcsphSolver::advanceDensities(ParticleSet& fluid, double dt) {
     });
 }
 
-double WcsphSolver::chooseTimeStep(double maxSpeed, double lastMaxAcceleration,
-                                   double timeToFrameEnd) const {
+void WcsphSolver::chooseTimeStep(double lastMaxAcceleration, double timeToFrameEnd,
+                                 StepReport& report) const {
     const double h = kernel_.smoothingLength();
-    double dt = settings_.cflFactor * h / (equationOfState_.speedOfSound() + maxSpeed);
+    double dt = settings_.cflFactor * h / (equationOfState_.speedOfSound() + report.maxSpeed);
     if (lastMaxAcceleration > 0.0)
         dt = std::min(dt, 0.25 * std::sqrt(h / lastMaxAcceleration));
-    if (dt >= timeToFrameEnd)
-        return timeToFrameEnd;
-    // Two even steps rather than a full one and a sliver: a tiny last step wastes a force pass.
-    if (2.0 * dt > timeToFrameEnd)
-        return 0.5 * timeToFrameEnd;
-    return dt;
+    report.timeStep = landOnFrame(dt, timeToFrameEnd);
 }
 
 void WcsphSolver::shepardFilter(ParticleSet& fluid) {

@@ -21,9 +21,13 @@ public:
     void sortByCell(ParticleSet& fluid, StepReport& report) override;
     void placeBoundary(const std::vector<RigidBody>& bodies) override;
     void pairMovingBoundary() override;
-    //! From the CFL condition and the last step's largest acceleration.
-    double chooseTimeStep(double maxSpeed, double lastMaxAcceleration,
-                          double timeToFrameEnd) const override;
+    //! Nothing: the densities come from the continuity equation in computeDensities().
+    void prepareDensities(ParticleSet&, StepReport&) override {}
+    //! Nothing: a weakly compressible fluid corrects its divergence through its pressure.
+    void solveDivergence(double, StepReport&) override {}
+    //! From the CFL condition on the speed of sound and the last step's largest acceleration.
+    void chooseTimeStep(double lastMaxAcceleration, double timeToFrameEnd,
+                        StepReport& report) const override;
     //! Every shepard_interval steps the Shepard re-initialisation; then ρ advanced by the
     //! continuity equation (eq. 2) and the pressures of the equation of state (eq. 3).
     void computeDensities(ParticleSet& fluid, std::uint64_t step, double dt,
@@ -41,6 +45,12 @@ public:
     const NeighborGrid& grid() const override { return grid_; }
     const PositionArrays& sortedPositions() const override { return sortedPositions_; }
     std::size_t allocatedBytes() const override;
+    //! From the equation of state (eq. 3).
+    float pressure(const ParticleSet& fluid, std::size_t i) const override {
+        return equationOfState_.pressure(fluid.densities[i]);
+    }
+    PressureWarmStart warmStart() const override { return {}; }
+    void restoreWarmStart(const PressureWarmStart&) override {}
 
     const TaitEquationOfState& equationOfState() const { return equationOfState_; }
 

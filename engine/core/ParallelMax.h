@@ -1,0 +1,24 @@
+#pragma once
+// The largest of f(i) over a range, in parallel. max is exact in any order, so the result does not
+// depend on the number of threads or on how the range was split.
+#include <algorithm>
+#include <cstddef>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
+
+namespace airtrap {
+
+template <class F>
+double parallelMax(std::size_t n, F&& f, std::size_t grain = 1024) {
+    using Range = tbb::blocked_range<std::size_t>;
+    return tbb::parallel_reduce(
+        Range(0, n, grain), 0.0,
+        [&](const Range& r, double best) {
+            for (std::size_t i = r.begin(); i != r.end(); ++i)
+                best = std::max(best, static_cast<double>(f(i)));
+            return best;
+        },
+        [](double a, double b) { return std::max(a, b); });
+}
+
+} // namespace airtrap

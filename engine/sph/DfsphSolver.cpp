@@ -1,0 +1,458 @@
+#include "sph/DfsphSolver.h"
+
+#include "core/ParallelMax.h"
+#include "sph/BoundaryNeighbors.h"
+#include "sph/CellSort.h"
+#include "sph/FrameLanding.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdint>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
+
+namespace airtrap {
+
+namespace {
+
+using Range = tbb::blocked_range<std::size_t>;
+constexpr std::size_t kSolveGrain = 512;
+//! The split of the deterministic sums: fixed, so every run adds in the same order.
+constexpr std::size_t kSolveSumGrain = 4096;
+
+//! A particle with fewer neighbours than this (water and boundary; 26 on the resting lattice)
+//! sits at the free surface, where the velocity may diverge: the divergence solve leaves it
+//! alone, as Bender & Koschier's implementation does, or it would glue splashes to the water.
+constexpr std::uint32_t kInteriorNeighbours = 20;
+//! Share of the last step's divergence stiffness the next step starts from: the compression
+//! the divergence solve removes comes mostly from the last step's residual, which the full value
+//! would overshoot (and an overshoot cannot be pulled back: the residual is clamped at zero).
+constexpr float kDivergenceWarmShare = 0.5f;
+//! The same for the density solve: the pressure a resting pool holds is the same from step to
+//! step, so most of it is reused.
+constexpr float kDensityWarmShare = 0.5f;
+
+//! Σ f(i) over [0, n), split and added in the same order on any number of threads.
+template <class F>
+double deterministicSum(std::size_t n, F&& f) {
+    return tbb::parallel_deterministic_reduce(
+        Range(0, n, kSolveSumGrain), 0.0,
+        [&](const Range& r, double sum) {
+            for (std::size_t i = r.begin(); i != r.end(); ++i)
+                sum += static_cast<double>(f(i));
+            return sum;
+        },
+        [](double a, double b) { return a + b; });
+}
+
+struct Fastest {
+    double speed = 0.0;
+    std::size_t particle = SIZE_MAX;
+};
+
+//! The largest speed(i) over [0, n) and the first particle that has it: the same on any number
+//! of threads.
+template <class Speed>
+Fastest findFastest(std::size_t n, Speed&& speed) {
+    const auto faster = [](const Fastest& a, const Fastest& b) {
+        if (a.speed != b.speed)
+            return a.speed > b.speed ? a : b;
+        return a.particle < b.particle ? a : b;
+    };
+    return tbb::parallel_reduce(
+        Range(0, n, kSolveSumGrain), Fastest{},
+        [&](const Range& r, Fastest best) {
+            for (std::size_t i = r.begin(); i != r.end(); ++i)
+                best = faster(best, Fastest{static_cast<double>(speed(i)), i});
+            return best;
+        },
+        faster);
+}
+
+} // namespace
+
+DfsphSolver::DfsphSolver(const SolverSettings& settings, const Aabb& domain)
+    : settings_(settings),
+      kernel_(static_cast<float>(settings.supportFactor * settings.particleSpacing)),
+      spacing_(static_cast<float>(settings.particleSpacing)),
+      mass_(static_cast<float>(settings.restDensity * std::pow(settings.particleSpacing, 3))),
+      radius2_(kernel_.supportRadius() * kernel_.supportRadius()),
+      eta2_(0.01f * kernel_.smoothingLength() * kernel_.smoothingLength()),
+      fluidViscosity_(static_cast<float>(settings.viscosityAlpha * 10.0 * settings.maxSpeed) *
+                      kernel_.smoothingLength()),
+      wallViscosity_(static_cast<float>(settings.wallViscosity * 10.0 * settings.maxSpeed) *
+                     kernel_.smoothingLength()),
+      // Water rests one spacing from the boundary layer; half of that is a real contact.
+      contactRadius_(0.5f * spacing_), gridDomain_(domain.expanded(kernel_.supportRadius())),
+      boundary_(gridDomain_, kernel_.supportRadius(), static_cast<float>(settings.restDensity)),
+      grid_(gridDomain_, kernel_.supportRadius()), contact_(mass_) {}
+
+void DfsphSolver::sortByCell(ParticleSet& fluid, StepReport& report) {
+    airtrap::sortByCell(grid_, fluid, reorderScratch_, sortedPositions_, report);
+}
+
+void DfsphSolver::placeBoundary(const std::vector<RigidBody>& bodies) {
+    boundary_.rebuild(bodies);
+}
+
+void DfsphSolver::pairMovingBoundary() {
+    if (boundary_.movingLayer().size() > 0)
+        boundary_.findMovingLayerPairs(grid_, sortedPositions_, kernel_.supportRadius());
+}
+
+template <class Visit>
+void DfsphSolver::forEachWaterNeighbor(std::size_t i, Visit&& visit) const {
+    const Vec3f xi = sortedPositions_[i];
+    if (neighbors_.overflowed(i)) {
+        sweepNeighbors(grid_, sortedPositions_, i, radius2_, visit);
+        return;
+    }
+    const std::uint32_t* list = neighbors_.neighbors(i);
+    for (std::uint32_t k = 0, n = neighbors_.count(i); k < n; ++k) {
+        const std::uint32_t j = list[k];
+        const Vec3f d = xi - sortedPositions_[j];
+        visit(j, d, d.squaredNorm());
+    }
+}
+
+// ---- densities and factors -----------------------------------------------------------------
+
+void DfsphSolver::prepareDensities(ParticleSet& fluid, StepReport& report) {
+    const std::size_t n = fluid.size();
+    neighbors_.resize(n);
+    velocities_.resize(n);
+    accelerations_.resize(n);
+    factors_.resize(n);
+    interior_.resize(n);
+    boundaryGradient_.resize(n);
+    boundaryRate_.resize(n);
+    stiffness_.resize(n);
+    nearestBoundary_.resize(n);
+    nearestIsMoving_.resize(n);
+    carryWarmStart(n);
+    tbb::parallel_for(Range(0, n, kSolveGrain), [&](const Range& r) {
+        std::uint32_t found[NeighborList::kCapacity + 1];
+        for (std::size_t i = r.begin(); i != r.end(); ++i)
+            prepareParticle(fluid, i, found);
+    });
+    const double restDensity = settings_.restDensity;
+    // Compression only: a splash particle's summed density is far below ρ₀ without any fault.
+    report.maxDensityDeviation = parallelMax(
+        n, [&](std::size_t i) { return std::max(0.0, fluid.densities[i] / restDensity - 1.0); });
+}
+
+void DfsphSolver::prepareParticle(ParticleSet& fluid, std::size_t i, std::uint32_t* found) {
+    velocities_[i] = fluid.velocities[i];
+    float weights = kernel_.value(0.0f);
+    Vec3f gradientSum = Vec3f::Zero();
+    float gradientSquares = 0.0f;
+    std::uint32_t count = 0;
+    sweepNeighbors(grid_, sortedPositions_, i, radius2_,
+                   [&](std::uint32_t j, const Vec3f& d, float r2) {
+                       weights += kernel_.value(std::sqrt(r2));
+                       const Vec3f grad = kernel_.gradientFromSquared(d, r2);
+                       gradientSum += grad;
+                       gradientSquares += grad.squaredNorm();
+                       found[std::min(count, NeighborList::kCapacity)] = j;
+                       ++count;
+                   });
+    neighbors_.store(i, found, count);
+
+    float density = mass_ * weights;
+    Vec3f boundaryGradient = Vec3f::Zero();
+    float boundaryRate = 0.0f;
+    BoundaryContact::Nearest nearest;
+    nearest.distance2 = contactRadius_ * contactRadius_;
+    forEachBoundaryNeighbor(
+        boundary_, kernel_.supportRadius(), i, sortedPositions_[i],
+        [&](const BoundaryLayer& layer, std::uint32_t b, const Vec3f& d, float r2) {
+            const float psi = layer.psi()[b];
+            const Vec3f grad = kernel_.gradientFromSquared(d, r2);
+            density += psi * kernel_.value(std::sqrt(r2));
+            boundaryGradient += psi * grad;
+            boundaryRate += psi * layer.velocities()[b].dot(grad);
+            nearest.consider(layer, b, r2);
+            ++count;
+        });
+    fluid.densities[i] = density;
+    boundaryGradient_[i] = boundaryGradient;
+    boundaryRate_[i] = boundaryRate;
+    nearestBoundary_[i] = static_cast<std::int32_t>(nearest.boundaryParticle);
+    nearestIsMoving_[i] = nearest.layer == &boundary_.movingLayer();
+
+    // αᵢ: how much qᵢ alone changes Dρᵢ/Dt, its own velocity and its neighbours' together.
+    const float denominator =
+        (mass_ * gradientSum + boundaryGradient).squaredNorm() + mass_ * mass_ * gradientSquares;
+    factors_[i] = denominator > 0.0f ? 1.0f / denominator : 0.0f;
+    interior_[i] = count >= kInteriorNeighbours;
+}
+
+void DfsphSolver::carryWarmStart(std::size_t n) {
+    const auto& order = grid_.order();
+    const auto carry = [&](const std::vector<float>& previous, std::vector<float>& current,
+                           float share) {
+        current.resize(n);
+        tbb::parallel_for(Range(0, n, kSolveGrain), [&](const Range& r) {
+            for (std::size_t s = r.begin(); s != r.end(); ++s) {
+                // Particles emitted since the last step have none.
+                const std::uint32_t from = order[s];
+                current[s] = from < previous.size() ? share * previous[from] : 0.0f;
+            }
+        });
+    };
+    carry(warmStart_.divergence, divergenceTotal_, kDivergenceWarmShare);
+    // Held as κ until the step is known: computeDensities() turns it into q = κ Δt.
+    carry(warmStart_.density, densityTotal_, kDensityWarmShare);
+}
+
+// ---- the solves ----------------------------------------------------------------------------
+
+float DfsphSolver::densityRate(std::size_t i) const {
+    const Vec3f vi = velocities_[i];
+    float rate = 0.0f;
+    forEachWaterNeighbor(i, [&](std::uint32_t j, const Vec3f& d, float r2) {
+        rate += (vi - velocities_[j]).dot(kernel_.gradientFromSquared(d, r2));
+    });
+    return mass_ * rate + vi.dot(boundaryGradient_[i]) - boundaryRate_[i];
+}
+
+double DfsphSolver::residuals(Solve solve, float dt, const float* densities) {
+    const std::size_t n = velocities_.size();
+    const float restDensity = static_cast<float>(settings_.restDensity);
+    const double sum = deterministicSum(n, [&](std::size_t i) {
+        float residual = 0.0f;
+        float increment = 0.0f;
+        if (solve == Solve::Divergence) {
+            if (interior_[i]) {
+                residual = std::max(0.0f, densityRate(i));
+                increment = residual * factors_[i];
+            }
+        } else {
+            // The compression the step would leave, ρ + Δt Dρ/Dt − ρ₀; expansion is the free
+            // surface's, not an error.
+            const float predicted = densities[i] + dt * densityRate(i);
+            residual = std::max(0.0f, predicted - restDensity);
+            increment = residual * factors_[i] / dt;
+        }
+        stiffness_[i] = increment;
+        return residual;
+    });
+    return n > 0 ? sum / double(n) : 0.0;
+}
+
+void DfsphSolver::applyStiffness(const std::vector<float>& stiffness, std::vector<float>* total) {
+    const std::size_t n = velocities_.size();
+    tbb::parallel_for(Range(0, n, kSolveGrain), [&](const Range& r) {
+        for (std::size_t i = r.begin(); i != r.end(); ++i) {
+            const float qi = stiffness[i];
+            Vec3f change = qi * boundaryGradient_[i];
+            Vec3f pairs = Vec3f::Zero();
+            forEachWaterNeighbor(i, [&](std::uint32_t j, const Vec3f& d, float r2) {
+                pairs += (qi + stiffness[j]) * kernel_.gradientFromSquared(d, r2);
+            });
+            change += mass_ * pairs;
+            velocities_[i] -= change;
+            if (total)
+                (*total)[i] += qi;
+        }
+    });
+}
+
+DfsphSolver::Outcome DfsphSolver::iterate(Solve solve, float dt, double tolerance,
+                                          std::vector<float>& total, const float* densities) {
+    // The warm start: the velocity change of the stiffness carried over, before any residual.
+    applyStiffness(total, nullptr);
+    Outcome outcome;
+    for (;;) {
+        outcome.averageResidual = residuals(solve, dt, densities);
+        const bool done = outcome.averageResidual <= tolerance &&
+                          outcome.iterations >= settings_.minIterations;
+        if (done)
+            return outcome;
+        if (outcome.iterations >= settings_.maxIterations) {
+            outcome.converged = false;
+            return outcome;
+        }
+        applyStiffness(stiffness_, &total);
+        ++outcome.iterations;
+    }
+}
+
+void DfsphSolver::solveDivergence(double lastTimeStep, StepReport& report) {
+    // The error is a rate; over the step about to be taken it is a compression, which is what
+    // the tolerance bounds. Before the first step the longest step is the strictest guess.
+    const double dt = lastTimeStep > 0.0 ? lastTimeStep : settings_.maxTimeStep;
+    const double tolerance = settings_.divergenceErrorTarget * settings_.restDensity / dt;
+    const Outcome outcome = iterate(Solve::Divergence, static_cast<float>(dt), tolerance,
+                                    divergenceTotal_, nullptr);
+    report.divergenceIterations = outcome.iterations;
+    computeNonPressureAccelerations();
+    // The speed the step must resolve is the one the forces lead to over it.
+    const float guess = static_cast<float>(dt);
+    const Fastest fastest = findFastest(velocities_.size(), [&](std::size_t i) {
+        return (velocities_[i] + guess * accelerations_[i]).norm();
+    });
+    report.maxSpeed = fastest.speed;
+    if (fastest.particle < velocities_.size())
+        report.fastestAt = sortedPositions_[fastest.particle];
+}
+
+void DfsphSolver::computeNonPressureAccelerations() {
+    const Vec3f gravity = settings_.gravity.cast<float>();
+    // Monaghan's Π (eq. 1, β = 0) needs the pair's mean density; ρ₀ is within the solve's
+    // tolerance of it.
+    const float invRestDensity = 1.0f / static_cast<float>(settings_.restDensity);
+    tbb::parallel_for(Range(0, velocities_.size(), kSolveGrain), [&](const Range& r) {
+        for (std::size_t i = r.begin(); i != r.end(); ++i) {
+            const Vec3f vi = velocities_[i];
+            Vec3f viscous = Vec3f::Zero();
+            forEachWaterNeighbor(i, [&](std::uint32_t j, const Vec3f& d, float r2) {
+                const float approach = (vi - velocities_[j]).dot(d);
+                if (approach < 0.0f)
+                    viscous += (fluidViscosity_ * approach / (r2 + eta2_)) *
+                               kernel_.gradientFromSquared(d, r2);
+            });
+            Vec3f acceleration = gravity + mass_ * invRestDensity * viscous;
+            forEachBoundaryNeighbor(
+                boundary_, kernel_.supportRadius(), i, sortedPositions_[i],
+                [&](const BoundaryLayer& layer, std::uint32_t b, const Vec3f& d, float r2) {
+                    acceleration += wallViscosity(i, layer, b, d, r2);
+                });
+            accelerations_[i] = acceleration;
+        }
+    });
+}
+
+Vec3f DfsphSolver::wallViscosity(std::size_t i, const BoundaryLayer& layer, std::uint32_t b,
+                                 const Vec3f& d, float r2) const {
+    const float approach = (velocities_[i] - layer.velocities()[b]).dot(d);
+    if (approach >= 0.0f)
+        return Vec3f::Zero();
+    const float invRestDensity = 1.0f / static_cast<float>(settings_.restDensity);
+    return (layer.psi()[b] * wallViscosity_ * approach * invRestDensity / (r2 + eta2_)) *
+           kernel_.gradientFromSquared(d, r2);
+}
+
+void DfsphSolver::chooseTimeStep(double, double timeToFrameEnd, StepReport& report) const {
+    double dt = settings_.maxTimeStep;
+    if (report.maxSpeed > 0.0)
+        dt = std::min(dt, settings_.flowCflFactor * settings_.particleSpacing / report.maxSpeed);
+    report.stepAtMinimum = dt < settings_.minTimeStep;
+    dt = std::max(dt, settings_.minTimeStep);
+    report.timeStep = landOnFrame(dt, timeToFrameEnd);
+}
+
+void DfsphSolver::computeDensities(ParticleSet& fluid, std::uint64_t, double dt,
+                                   StepReport& report) {
+    const float step = static_cast<float>(dt);
+    tbb::parallel_for(Range(0, velocities_.size(), kSolveGrain), [&](const Range& r) {
+        for (std::size_t i = r.begin(); i != r.end(); ++i) {
+            velocities_[i] += step * accelerations_[i];
+            densityTotal_[i] *= step; // κ carried over → q for this step
+        }
+    });
+    const double tolerance = settings_.densityErrorTarget * settings_.restDensity;
+    const Outcome outcome =
+        iterate(Solve::Density, step, tolerance, densityTotal_, fluid.densities.data());
+    report.densityIterations = outcome.iterations;
+    report.densityError = outcome.averageResidual / settings_.restDensity;
+    report.densityConverged = outcome.converged;
+}
+
+void DfsphSolver::computeForces(const ParticleSet&, double dt, StepReport& report) {
+    const std::size_t n = velocities_.size();
+    const bool recordContacts = boundary_.hasDynamicBodies();
+    if (recordContacts)
+        contacts_.resize(n);
+    const float step = static_cast<float>(dt);
+    tbb::parallel_for(Range(0, n, kSolveGrain), [&](const Range& r) {
+        for (std::size_t i = r.begin(); i != r.end(); ++i) {
+            BoundaryContact::Nearest nearest;
+            Vec3f impulse = Vec3f::Zero();
+            if (nearestBoundary_[i] >= 0) {
+                nearest.layer =
+                    nearestIsMoving_[i] ? &boundary_.movingLayer() : &boundary_.staticLayer();
+                nearest.boundaryParticle = nearestBoundary_[i];
+                // The solved velocity is the one the particle moves with: no acceleration left.
+                impulse = contact_.impulse(velocities_[i], Vec3f::Zero(), nearest, boundary_, step);
+                velocities_[i] += impulse / mass_;
+            }
+            if (recordContacts)
+                BoundaryContact::record(i, nearest, impulse, boundary_, contacts_);
+        }
+    });
+    report.maxAcceleration =
+        parallelMax(n, [&](std::size_t i) { return accelerations_[i].norm(); });
+}
+
+void DfsphSolver::computeBodyReactions(const ParticleSet&, double dt) {
+    const BoundaryLayer& layer = boundary_.movingLayer();
+    reactions_.assign(layer.size(), Vec3d::Zero());
+    const float inverseStep = static_cast<float>(1.0 / dt);
+    tbb::parallel_for(Range(0, layer.size(), kSolveGrain), [&](const Range& r) {
+        for (std::size_t b = r.begin(); b != r.end(); ++b) {
+            if (!boundary_.contactTerms(layer.bodyOf()[b]).dynamic)
+                continue;
+            const Vec3f xb = layer.positions()[b];
+            const float psi = layer.psi()[b];
+            Vec3f force = Vec3f::Zero();
+            for (std::uint32_t i : boundary_.movingPairs().waterNear(b)) {
+                const Vec3f d = sortedPositions_[i] - xb;
+                const float r2 = d.squaredNorm();
+                if (r2 >= radius2_)
+                    continue;
+                // Both solves pushed water particle i off b by −qᵢ Ψ_b ∇W_ib; b takes the
+                // opposite momentum over the step.
+                const float stiffness = divergenceTotal_[i] + densityTotal_[i];
+                force += (mass_ * psi * stiffness * inverseStep) *
+                         kernel_.gradientFromSquared(d, r2);
+                force -= mass_ * wallViscosity(i, layer, static_cast<std::uint32_t>(b), d, r2);
+                if (contacts_.boundaryParticle[i] == static_cast<std::int32_t>(b))
+                    force -= inverseStep * contacts_.impulse[i];
+            }
+            reactions_[b] = force.cast<double>();
+        }
+    });
+}
+
+bool DfsphSolver::integrate(ParticleSet& fluid, double dt) {
+    const float step = static_cast<float>(dt);
+    const float inverseStep = 1.0f / step;
+    const std::size_t n = fluid.size();
+    warmStart_.divergence.resize(n);
+    warmStart_.density.resize(n);
+    std::atomic<bool> nonFinite{false};
+    tbb::parallel_for(Range(0, n, kSolveGrain), [&](const Range& r) {
+        for (std::size_t i = r.begin(); i != r.end(); ++i) {
+            fluid.velocities[i] = velocities_[i];
+            fluid.positions[i] += step * velocities_[i];
+            warmStart_.divergence[i] = divergenceTotal_[i];
+            warmStart_.density[i] = densityTotal_[i] * inverseStep;
+            if (!fluid.positions[i].allFinite() || !fluid.velocities[i].allFinite())
+                nonFinite.store(true, std::memory_order_relaxed);
+        }
+    });
+    return nonFinite.load();
+}
+
+float DfsphSolver::pressure(const ParticleSet& fluid, std::size_t i) const {
+    if (i >= warmStart_.density.size())
+        return 0.0f;
+    const float rho = fluid.densities[i];
+    return warmStart_.density[i] * rho * rho;
+}
+
+std::size_t DfsphSolver::allocatedBytes() const {
+    const auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
+    return grid_.allocatedBytes() + boundary_.allocatedBytes() + sortedPositions_.allocatedBytes() +
+           reorderScratch_.allocatedBytes() + neighbors_.allocatedBytes() + bytes(velocities_) +
+           bytes(accelerations_) + bytes(factors_) + bytes(interior_) + bytes(boundaryGradient_) +
+           bytes(boundaryRate_) + bytes(stiffness_) + bytes(divergenceTotal_) +
+           bytes(densityTotal_) + bytes(nearestBoundary_) + bytes(nearestIsMoving_) +
+           contacts_.allocatedBytes() + bytes(reactions_) + bytes(warmStart_.divergence) +
+           bytes(warmStart_.density);
+}
+
+} // namespace airtrap

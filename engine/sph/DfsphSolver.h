@@ -1,0 +1,124 @@
+#pragma once
+// Divergence-free SPH (Bender & Koschier 2015, 2017; docs/METHOD.md "Water: divergence-free
+// SPH"): densities by summation over water and boundary particles, a divergence solve that makes
+// the velocity field free of compression, non-pressure forces (gravity, the artificial viscosity
+// of eq. 1), a step limited only by the flow's CFL, and a density solve that removes the
+// compression the step would leave. Both solves are Jacobi iterations on a per-particle
+// stiffness, warm-started from the previous step's. Boundary particles (Akinci volumes) take part
+// in both; the pressure they exert goes to their body, and the contact impulse of the
+// impulse-based boundary force (eq. 4) stays for water approaching a body.
+#include "scene/Scene.h"
+#include "sph/BoundaryContact.h"
+#include "sph/NeighborList.h"
+#include "sph/NeighborSweep.h"
+#include "sph/PressureSolver.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace airtrap {
+
+class DfsphSolver final : public PressureSolver {
+public:
+    //! The water of `domain` with no boundary yet: placeBoundary() gives it the bodies.
+    DfsphSolver(const SolverSettings& settings, const Aabb& domain);
+
+    void sortByCell(ParticleSet& fluid, StepReport& report) override;
+    void placeBoundary(const std::vector<RigidBody>& bodies) override;
+    void pairMovingBoundary() override;
+    //! ρᵢ = Σⱼ mⱼWᵢⱼ + Σ_b Ψ_b W_ib and the factors αᵢ of both solves; the nearest body for the
+    //! contact impulse; the warm start carried into this step's order.
+    void prepareDensities(ParticleSet& fluid, StepReport& report) override;
+    void solveDivergence(double lastTimeStep, StepReport& report) override;
+    //! Δt = λ Δx / |v|max within [min_time_step, max_time_step].
+    void chooseTimeStep(double lastMaxAcceleration, double timeToFrameEnd,
+                        StepReport& report) const override;
+    //! The density solve on the velocities the non-pressure forces predict for `dt`.
+    void computeDensities(ParticleSet& fluid, std::uint64_t step, double dt,
+                          StepReport& report) override;
+    //! The contact impulses of eq. 4 on the solved velocities.
+    void computeForces(const ParticleSet& fluid, double dt, StepReport& report) override;
+    void computeBodyReactions(const ParticleSet& fluid, double dt) override;
+    const std::vector<Vec3d>& bodyReactions() const override { return reactions_; }
+    //! v ← the solved velocity, x ← x + Δt v.
+    bool integrate(ParticleSet& fluid, double dt) override;
+
+    const CubicSplineKernel& kernel() const override { return kernel_; }
+    float particleMass() const override { return mass_; }
+    const BoundaryModel& boundary() const override { return boundary_; }
+    const NeighborGrid& grid() const override { return grid_; }
+    const PositionArrays& sortedPositions() const override { return sortedPositions_; }
+    std::size_t allocatedBytes() const override;
+    //! p = κ ρ², κ from the last density solve.
+    float pressure(const ParticleSet& fluid, std::size_t i) const override;
+    PressureWarmStart warmStart() const override { return warmStart_; }
+    void restoreWarmStart(const PressureWarmStart& warmStart) override { warmStart_ = warmStart; }
+
+private:
+    enum class Solve { Divergence, Density };
+    struct Outcome {
+        int iterations = 0;
+        double averageResidual = 0.0; //!< of the last residual pass
+        bool converged = true;
+    };
+
+    //! Sweeps water particle i's neighbours once: density, α, boundary sums, nearest body.
+    void prepareParticle(ParticleSet& fluid, std::size_t i, std::uint32_t* found);
+    //! Iterates `solve` until its average residual is at most `tolerance` (kg/m³, per second for
+    //! the divergence), starting from the stiffness already in `total`.
+    //! `densities` (kg/m³) are the step's, for the density solve.
+    Outcome iterate(Solve solve, float dt, double tolerance, std::vector<float>& total,
+                    const float* densities);
+    //! Each particle's residual and the stiffness increment that removes it (into stiffness_);
+    //! returns the average residual.
+    double residuals(Solve solve, float dt, const float* densities);
+    //! Dρᵢ/Dt of the current velocities over water and boundary particles.
+    float densityRate(std::size_t i) const;
+    //! vᵢ ← vᵢ − Σⱼ m(qᵢ + qⱼ)∇Wᵢⱼ − qᵢ Bᵢ for the stiffness q in `stiffness`, and total += q.
+    void applyStiffness(const std::vector<float>& stiffness, std::vector<float>* total);
+    //! Gravity and the artificial viscosity of eq. 1 (water and walls), into accelerations_.
+    void computeNonPressureAccelerations();
+    //! The previous step's stiffness values, carried into this step's sorted order.
+    void carryWarmStart(std::size_t n);
+    //! The viscous acceleration of water particle i from boundary particle b at d = xᵢ − x_b.
+    Vec3f wallViscosity(std::size_t i, const BoundaryLayer& layer, std::uint32_t b,
+                        const Vec3f& d, float r2) const;
+    template <class Visit>
+    void forEachWaterNeighbor(std::size_t i, Visit&& visit) const;
+
+    SolverSettings settings_;
+    CubicSplineKernel kernel_;
+    float spacing_;
+    float mass_;
+    float radius2_;
+    float eta2_;
+    float fluidViscosity_; //!< α c h of eq. 1's Π, c = 10 u_max as for WCSPH
+    float wallViscosity_;  //!< the same against boundary particles
+    float contactRadius_;
+    Aabb gridDomain_;
+    BoundaryModel boundary_;
+    NeighborGrid grid_;
+    BoundaryContact contact_;
+
+    // Per particle, in the sorted order of the current step.
+    PositionArrays sortedPositions_;
+    ParticleSet reorderScratch_;
+    NeighborList neighbors_;
+    std::vector<Vec3f> velocities_;       //!< solved in place, written back by integrate()
+    std::vector<Vec3f> accelerations_;    //!< non-pressure
+    std::vector<float> factors_;          //!< αᵢ = 1 / (|Σⱼ m∇Wᵢⱼ + Bᵢ|² + Σⱼ |m∇Wᵢⱼ|²)
+    std::vector<std::uint8_t> interior_;  //!< enough neighbours for the divergence solve
+    std::vector<Vec3f> boundaryGradient_; //!< Bᵢ = Σ_b Ψ_b ∇W_ib
+    std::vector<float> boundaryRate_;     //!< Σ_b Ψ_b v_b·∇W_ib
+    std::vector<float> stiffness_;        //!< this iteration's increment
+    std::vector<float> divergenceTotal_;  //!< q of the divergence solve, summed
+    std::vector<float> densityTotal_;     //!< q of the density solve, summed
+    std::vector<std::int32_t> nearestBoundary_; //!< within the contact radius, −1 for none
+    std::vector<std::uint8_t> nearestIsMoving_; //!< in the moving layer rather than the static
+    ContactRecords contacts_;
+    std::vector<Vec3d> reactions_;
+    //! In the water's order at the end of the last step.
+    PressureWarmStart warmStart_;
+};
+
+} // namespace airtrap
