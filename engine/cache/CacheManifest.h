@@ -21,7 +21,7 @@ struct CacheFrameEntry {
 };
 
 struct CacheManifest {
-    static constexpr int kFormatVersion = 1;
+    static constexpr int kFormatVersion = 2;
     //! Value of the "format" field; tells a cache manifest from any other manifest.json.
     static constexpr const char* kFormatName = "airtrap-cache";
     static constexpr const char* kFileName = "manifest.json";

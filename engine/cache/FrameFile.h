@@ -21,7 +21,7 @@ struct FrameData {
 };
 
 //! Version written into every frame header; a reader refuses files with a larger one.
-inline constexpr std::uint32_t kFrameFormatVersion = 1;
+inline constexpr std::uint32_t kFrameFormatVersion = 2;
 //! Bytes of the fixed header that precedes the chunk payload.
 inline constexpr std::uint32_t kFrameHeaderSize = 32;
 

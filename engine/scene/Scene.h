@@ -32,6 +32,8 @@ struct SolverSettings {
     int minIterations = 2;                //!< per solve
     int maxIterations = 100;              //!< per solve
     double flowCflFactor = 0.4;           //!< λ in Δt = λ Δx / |v|max
+    double xsphFactor = 0.01;             //!< XSPH viscosity between water particles
+    double wallXsphFactor = 0.0;          //!< XSPH toward the walls' velocity (friction)
     double minTimeStep = 0.0001;          //!< s
     double maxTimeStep = 0.005;           //!< s
 

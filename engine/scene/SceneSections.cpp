@@ -184,6 +184,21 @@ SchemaSection solverSection() {
                              .help = "λ in the time step Δt = λ Δx / |v|max: the fastest "
                                      "particle moves λ spacings per step."},
                             &SolverSettings::flowCflFactor),
+         bind<SolverAccess>({.key = "xsph",
+                             .label = "XSPH viscosity (DFSPH)",
+                             .minimum = 0.0,
+                             .maximum = 0.5,
+                             .help = "Each step moves a particle's velocity this share toward "
+                                     "its neighbours' kernel-weighted mean (Monaghan's XSPH): "
+                                     "the viscosity, stable at any step."},
+                            &SolverSettings::xsphFactor),
+         bind<SolverAccess>({.key = "wall_xsph",
+                             .label = "Wall XSPH (DFSPH)",
+                             .minimum = 0.0,
+                             .maximum = 1.0,
+                             .help = "The same toward the velocity of the walls and bodies the "
+                                     "water touches: wall friction (0 = free slip)."},
+                            &SolverSettings::wallXsphFactor),
          bind<SolverAccess>({.key = "min_time_step",
                              .label = "Minimum time step (DFSPH)",
                              .unit = "s",

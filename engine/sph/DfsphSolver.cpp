@@ -30,8 +30,9 @@ constexpr std::uint32_t kInteriorNeighbours = 20;
 //! the divergence solve removes comes mostly from the last step's residual, which the full value
 //! would overshoot (and an overshoot cannot be pulled back: the residual is clamped at zero).
 constexpr float kDivergenceWarmShare = 0.5f;
-//! The same for the density solve: the pressure a resting pool holds is the same from step to
-//! step, so most of it is reused.
+//! The same for the density solve. The whole of it (the pressure a resting pool holds is the same
+//! from step to step) made a resting tank blow up within ten steps: measured in
+//! docs/VALIDATION.md "DFSPH".
 constexpr float kDensityWarmShare = 0.5f;
 
 //! Σ f(i) over [0, n), split and added in the same order on any number of threads.
@@ -79,11 +80,6 @@ DfsphSolver::DfsphSolver(const SolverSettings& settings, const Aabb& domain)
       spacing_(static_cast<float>(settings.particleSpacing)),
       mass_(static_cast<float>(settings.restDensity * std::pow(settings.particleSpacing, 3))),
       radius2_(kernel_.supportRadius() * kernel_.supportRadius()),
-      eta2_(0.01f * kernel_.smoothingLength() * kernel_.smoothingLength()),
-      fluidViscosity_(static_cast<float>(settings.viscosityAlpha * 10.0 * settings.maxSpeed) *
-                      kernel_.smoothingLength()),
-      wallViscosity_(static_cast<float>(settings.wallViscosity * 10.0 * settings.maxSpeed) *
-                     kernel_.smoothingLength()),
       // Water rests one spacing from the boundary layer; half of that is a real contact.
       contactRadius_(0.5f * spacing_), gridDomain_(domain.expanded(kernel_.supportRadius())),
       boundary_(gridDomain_, kernel_.supportRadius(), static_cast<float>(settings.restDensity)),
@@ -123,7 +119,7 @@ void DfsphSolver::prepareDensities(ParticleSet& fluid, StepReport& report) {
     const std::size_t n = fluid.size();
     neighbors_.resize(n);
     velocities_.resize(n);
-    accelerations_.resize(n);
+    unsmoothed_.resize(n);
     factors_.resize(n);
     interior_.resize(n);
     boundaryGradient_.resize(n);
@@ -262,7 +258,14 @@ void DfsphSolver::applyStiffness(const std::vector<float>& stiffness, std::vecto
 
 DfsphSolver::Outcome DfsphSolver::iterate(Solve solve, float dt, double tolerance,
                                           std::vector<float>& total, const float* densities) {
-    // The warm start: the velocity change of the stiffness carried over, before any residual.
+    // The warm start: the stiffness carried over, where the water is compressing now (else it
+    // would push apart water that has since relaxed, and nothing could pull it back).
+    residuals(solve, dt, densities);
+    tbb::parallel_for(Range(0, total.size(), kSolveGrain), [&](const Range& r) {
+        for (std::size_t i = r.begin(); i != r.end(); ++i)
+            if (stiffness_[i] <= 0.0f)
+                total[i] = 0.0f;
+    });
     applyStiffness(total, nullptr);
     Outcome outcome;
     for (;;) {
@@ -288,51 +291,45 @@ void DfsphSolver::solveDivergence(double lastTimeStep, StepReport& report) {
     const Outcome outcome = iterate(Solve::Divergence, static_cast<float>(dt), tolerance,
                                     divergenceTotal_, nullptr);
     report.divergenceIterations = outcome.iterations;
-    computeNonPressureAccelerations();
-    // The speed the step must resolve is the one the forces lead to over it.
-    const float guess = static_cast<float>(dt);
+    // The speed the step must resolve: the one gravity leads to over it (XSPH only averages).
+    const Vec3f gravityStep = static_cast<float>(dt) * settings_.gravity.cast<float>();
     const Fastest fastest = findFastest(velocities_.size(), [&](std::size_t i) {
-        return (velocities_[i] + guess * accelerations_[i]).norm();
+        return (velocities_[i] + gravityStep).norm();
     });
     report.maxSpeed = fastest.speed;
     if (fastest.particle < velocities_.size())
         report.fastestAt = sortedPositions_[fastest.particle];
 }
 
-void DfsphSolver::computeNonPressureAccelerations() {
-    const Vec3f gravity = settings_.gravity.cast<float>();
-    // Monaghan's Π (eq. 1, β = 0) needs the pair's mean density; ρ₀ is within the solve's
-    // tolerance of it.
-    const float invRestDensity = 1.0f / static_cast<float>(settings_.restDensity);
+void DfsphSolver::applyNonPressureForces(const ParticleSet& fluid, float dt) {
+    const Vec3f gravityStep = dt * settings_.gravity.cast<float>();
+    const float water = static_cast<float>(settings_.xsphFactor) * mass_;
+    const float walls =
+        static_cast<float>(settings_.wallXsphFactor / settings_.restDensity);
+    std::copy(velocities_.begin(), velocities_.end(), unsmoothed_.begin());
     tbb::parallel_for(Range(0, velocities_.size(), kSolveGrain), [&](const Range& r) {
         for (std::size_t i = r.begin(); i != r.end(); ++i) {
-            const Vec3f vi = velocities_[i];
-            Vec3f viscous = Vec3f::Zero();
-            forEachWaterNeighbor(i, [&](std::uint32_t j, const Vec3f& d, float r2) {
-                const float approach = (vi - velocities_[j]).dot(d);
-                if (approach < 0.0f)
-                    viscous += (fluidViscosity_ * approach / (r2 + eta2_)) *
-                               kernel_.gradientFromSquared(d, r2);
+            const Vec3f vi = unsmoothed_[i];
+            Vec3f towardWater = Vec3f::Zero();
+            forEachWaterNeighbor(i, [&](std::uint32_t j, const Vec3f&, float r2) {
+                towardWater += (unsmoothed_[j] - vi) *
+                               (kernel_.value(std::sqrt(r2)) / fluid.densities[j]);
             });
-            Vec3f acceleration = gravity + mass_ * invRestDensity * viscous;
-            forEachBoundaryNeighbor(
-                boundary_, kernel_.supportRadius(), i, sortedPositions_[i],
-                [&](const BoundaryLayer& layer, std::uint32_t b, const Vec3f& d, float r2) {
-                    acceleration += wallViscosity(i, layer, b, d, r2);
-                });
-            accelerations_[i] = acceleration;
+            Vec3f towardWalls = Vec3f::Zero();
+            if (walls > 0.0f)
+                forEachBoundaryNeighbor(
+                    boundary_, kernel_.supportRadius(), i, sortedPositions_[i],
+                    [&](const BoundaryLayer& layer, std::uint32_t b, const Vec3f&, float r2) {
+                        towardWalls += wallSmoothing(vi, layer, b, r2);
+                    });
+            velocities_[i] = vi + water * towardWater + walls * towardWalls + gravityStep;
         }
     });
 }
 
-Vec3f DfsphSolver::wallViscosity(std::size_t i, const BoundaryLayer& layer, std::uint32_t b,
-                                 const Vec3f& d, float r2) const {
-    const float approach = (velocities_[i] - layer.velocities()[b]).dot(d);
-    if (approach >= 0.0f)
-        return Vec3f::Zero();
-    const float invRestDensity = 1.0f / static_cast<float>(settings_.restDensity);
-    return (layer.psi()[b] * wallViscosity_ * approach * invRestDensity / (r2 + eta2_)) *
-           kernel_.gradientFromSquared(d, r2);
+Vec3f DfsphSolver::wallSmoothing(const Vec3f& vi, const BoundaryLayer& layer, std::uint32_t b,
+                                 float r2) const {
+    return (layer.psi()[b] * kernel_.value(std::sqrt(r2))) * (layer.velocities()[b] - vi);
 }
 
 void DfsphSolver::chooseTimeStep(double, double timeToFrameEnd, StepReport& report) const {
@@ -347,11 +344,10 @@ void DfsphSolver::chooseTimeStep(double, double timeToFrameEnd, StepReport& repo
 void DfsphSolver::computeDensities(ParticleSet& fluid, std::uint64_t, double dt,
                                    StepReport& report) {
     const float step = static_cast<float>(dt);
+    applyNonPressureForces(fluid, step);
     tbb::parallel_for(Range(0, velocities_.size(), kSolveGrain), [&](const Range& r) {
-        for (std::size_t i = r.begin(); i != r.end(); ++i) {
-            velocities_[i] += step * accelerations_[i];
+        for (std::size_t i = r.begin(); i != r.end(); ++i)
             densityTotal_[i] *= step; // κ carried over → q for this step
-        }
     });
     const double tolerance = settings_.densityErrorTarget * settings_.restDensity;
     const Outcome outcome =
@@ -383,14 +379,14 @@ void DfsphSolver::computeForces(const ParticleSet&, double dt, StepReport& repor
                 BoundaryContact::record(i, nearest, impulse, boundary_, contacts_);
         }
     });
-    report.maxAcceleration =
-        parallelMax(n, [&](std::size_t i) { return accelerations_[i].norm(); });
+    report.maxAcceleration = settings_.gravity.norm();
 }
 
 void DfsphSolver::computeBodyReactions(const ParticleSet&, double dt) {
     const BoundaryLayer& layer = boundary_.movingLayer();
     reactions_.assign(layer.size(), Vec3d::Zero());
     const float inverseStep = static_cast<float>(1.0 / dt);
+    const float walls = static_cast<float>(settings_.wallXsphFactor / settings_.restDensity);
     tbb::parallel_for(Range(0, layer.size(), kSolveGrain), [&](const Range& r) {
         for (std::size_t b = r.begin(); b != r.end(); ++b) {
             if (!boundary_.contactTerms(layer.bodyOf()[b]).dynamic)
@@ -408,7 +404,8 @@ void DfsphSolver::computeBodyReactions(const ParticleSet&, double dt) {
                 const float stiffness = divergenceTotal_[i] + densityTotal_[i];
                 force += (mass_ * psi * stiffness * inverseStep) *
                          kernel_.gradientFromSquared(d, r2);
-                force -= mass_ * wallViscosity(i, layer, static_cast<std::uint32_t>(b), d, r2);
+                force -= (mass_ * walls * inverseStep) *
+                         wallSmoothing(unsmoothed_[i], layer, static_cast<std::uint32_t>(b), r2);
                 if (contacts_.boundaryParticle[i] == static_cast<std::int32_t>(b))
                     force -= inverseStep * contacts_.impulse[i];
             }
@@ -448,7 +445,7 @@ std::size_t DfsphSolver::allocatedBytes() const {
     const auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
     return grid_.allocatedBytes() + boundary_.allocatedBytes() + sortedPositions_.allocatedBytes() +
            reorderScratch_.allocatedBytes() + neighbors_.allocatedBytes() + bytes(velocities_) +
-           bytes(accelerations_) + bytes(factors_) + bytes(interior_) + bytes(boundaryGradient_) +
+           bytes(unsmoothed_) + bytes(factors_) + bytes(interior_) + bytes(boundaryGradient_) +
            bytes(boundaryRate_) + bytes(stiffness_) + bytes(divergenceTotal_) +
            bytes(densityTotal_) + bytes(nearestBoundary_) + bytes(nearestIsMoving_) +
            contacts_.allocatedBytes() + bytes(reactions_) + bytes(warmStart_.divergence) +

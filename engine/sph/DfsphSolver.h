@@ -1,8 +1,8 @@
 #pragma once
 // Divergence-free SPH (Bender & Koschier 2015, 2017; docs/METHOD.md "Water: divergence-free
 // SPH"): densities by summation over water and boundary particles, a divergence solve that makes
-// the velocity field free of compression, non-pressure forces (gravity, the artificial viscosity
-// of eq. 1), a step limited only by the flow's CFL, and a density solve that removes the
+// the velocity field free of compression, a step limited only by the flow's CFL, non-pressure
+// forces (gravity, XSPH viscosity), and a density solve that removes the
 // compression the step would leave. Both solves are Jacobi iterations on a per-particle
 // stiffness, warm-started from the previous step's. Boundary particles (Akinci volumes) take part
 // in both; the pressure they exert goes to their body, and the contact impulse of the
@@ -76,13 +76,14 @@ private:
     float densityRate(std::size_t i) const;
     //! vᵢ ← vᵢ − Σⱼ m(qᵢ + qⱼ)∇Wᵢⱼ − qᵢ Bᵢ for the stiffness q in `stiffness`, and total += q.
     void applyStiffness(const std::vector<float>& stiffness, std::vector<float>* total);
-    //! Gravity and the artificial viscosity of eq. 1 (water and walls), into accelerations_.
-    void computeNonPressureAccelerations();
+    //! v ← v + Δt g and XSPH smoothing toward the water's and the walls' velocities
+    //! (solver.xsph, solver.wall_xsph); the velocities before it are kept in unsmoothed_.
+    void applyNonPressureForces(const ParticleSet& fluid, float dt);
     //! The previous step's stiffness values, carried into this step's sorted order.
     void carryWarmStart(std::size_t n);
-    //! The viscous acceleration of water particle i from boundary particle b at d = xᵢ − x_b.
-    Vec3f wallViscosity(std::size_t i, const BoundaryLayer& layer, std::uint32_t b,
-                        const Vec3f& d, float r2) const;
+    //! Ψ_b W_ib (v_b − vᵢ): boundary particle b's share of the walls' XSPH for velocity vi.
+    Vec3f wallSmoothing(const Vec3f& vi, const BoundaryLayer& layer, std::uint32_t b,
+                        float r2) const;
     template <class Visit>
     void forEachWaterNeighbor(std::size_t i, Visit&& visit) const;
 
@@ -91,9 +92,6 @@ private:
     float spacing_;
     float mass_;
     float radius2_;
-    float eta2_;
-    float fluidViscosity_; //!< α c h of eq. 1's Π, c = 10 u_max as for WCSPH
-    float wallViscosity_;  //!< the same against boundary particles
     float contactRadius_;
     Aabb gridDomain_;
     BoundaryModel boundary_;
@@ -105,7 +103,7 @@ private:
     ParticleSet reorderScratch_;
     NeighborList neighbors_;
     std::vector<Vec3f> velocities_;       //!< solved in place, written back by integrate()
-    std::vector<Vec3f> accelerations_;    //!< non-pressure
+    std::vector<Vec3f> unsmoothed_;       //!< before the non-pressure forces
     std::vector<float> factors_;          //!< αᵢ = 1 / (|Σⱼ m∇Wᵢⱼ + Bᵢ|² + Σⱼ |m∇Wᵢⱼ|²)
     std::vector<std::uint8_t> interior_;  //!< enough neighbours for the divergence solve
     std::vector<Vec3f> boundaryGradient_; //!< Bᵢ = Σ_b Ψ_b ∇W_ib

@@ -75,6 +75,44 @@ private Q_SLOTS:
             QCOMPARE(cache.readFrame(frame).state.frame, frame);
     }
 
+    void unconvergedDensitySolveStopsTheBakeAndKeepsGoodFrames() {
+        Scene scene = collapsingColumn();
+        scene.solver.method = "dfsph";
+        // One iteration cannot reach an average density error of 0.0001 %: every step of the
+        // falling column stops at the maximum.
+        scene.solver.minIterations = 0;
+        scene.solver.maxIterations = 1;
+        scene.solver.densityErrorTarget = 1e-6;
+        QTemporaryDir dir;
+        BakeOptions options;
+        options.cacheDir = dir.filePath("cache").toStdString();
+        Baker baker(scene, options);
+        std::vector<int> written;
+        std::vector<std::string> notices;
+        baker.onFrame([&](int frame, const FrameStats&) { written.push_back(frame); });
+        baker.onMessage([&](const std::string& notice) { notices.push_back(notice); });
+        Interrupter interrupter;
+        QString message;
+        try {
+            baker.run(interrupter);
+        } catch (const Error& error) {
+            QCOMPARE(error.kind(), ErrorKind::SimulationBlowUp);
+            message = QString::fromStdString(error.what());
+        }
+        QVERIFY2(!message.isEmpty(), "the bake finished although no solve converged");
+        QVERIFY(written.size() >= 2);
+        QVERIFY2(message.startsWith(QString("frame %1 ").arg(written.back() + 1)),
+                 qPrintable(message));
+        QVERIFY2(message.contains("solver.max_iterations = 1 for 50 steps in a row") &&
+                     message.contains("solver.density_error"),
+                 qPrintable(message));
+        // Each finished frame said how many of its solves stopped short.
+        QVERIFY(!notices.empty());
+        QVERIFY2(QString::fromStdString(notices.front()).contains("the density solve stopped at"),
+                 notices.front().c_str());
+        QCOMPARE(FrameCache::open(options.cacheDir).frames(), written);
+    }
+
     void waterLeavingTheDomainStopsTheBake() {
         Scene scene = collapsingColumn();
         scene.container.headroom = 0.05;

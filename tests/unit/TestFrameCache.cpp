@@ -107,7 +107,7 @@ private Q_SLOTS:
         makeCacheWithThreeFrames();
         const auto json = nlohmann::json::parse(readBytes(dir_ + "/manifest.json"));
         QCOMPARE(json.at("format").get<std::string>(), std::string("airtrap-cache"));
-        QCOMPARE(json.at("format_version").get<int>(), 1);
+        QCOMPARE(json.at("format_version").get<int>(), CacheManifest::kFormatVersion);
         QCOMPARE(json.at("parameter_hash").get<std::string>(), kHash);
         QCOMPARE(json.at("frames").size(), std::size_t(3));
         QCOMPARE(json.at("frames")[2].at("file").get<std::string>(), std::string("frame_0003.atf"));
@@ -257,7 +257,7 @@ private Q_SLOTS:
     void newerManifestVersionNamed() {
         makeCacheWithThreeFrames();
         auto json = nlohmann::json::parse(readBytes(dir_ + "/manifest.json"));
-        json["format_version"] = 2;
+        json["format_version"] = CacheManifest::kFormatVersion + 1;
         const std::string text = json.dump();
         writeBytes(dir_ + "/manifest.json", {text.begin(), text.end()});
         const auto error = errorOf([&] { FrameCache::open(dir_); });

@@ -400,6 +400,57 @@ private Q_SLOTS:
         QVERIFY2(message.contains("chunk BSFD is 24 bytes, expected 32"), qPrintable(message));
     }
 
+    void pressureSolveRoundTripIsExact() {
+        SimulationState state = randomState(9, 6, 3);
+        // A divergence-free bake's warm start: one value per particle that the last step moved
+        // (the inflow after it may have added more, which start from zero).
+        state.warmStart.divergence = {0.5f, -0.0f, 1e-30f, 3.0f, 0.25f};
+        state.warmStart.density = {2.0f, 0.0f, std::numeric_limits<float>::denorm_min(), 7.5f,
+                                   1.0f / 3.0f};
+        FrameStats stats;
+        stats.pressureSolve = {.steps = 17,
+                               .divergenceIterations = 40,
+                               .densityIterations = 95,
+                               .meanDensityError = 8.5e-5,
+                               .maxDensityError = 1.25e-4,
+                               .unconvergedSteps = 1};
+        const std::vector<std::uint8_t> bytes = encodeFrame(state, stats);
+        const FrameData decoded = decodeFrame(bytes, kPath);
+        QVERIFY(decoded.state == state);
+        QVERIFY(decoded.stats.pressureSolve == stats.pressureSolve);
+        QVERIFY(encodeFrame(decoded.state, decoded.stats) == bytes);
+    }
+
+    void framesWithoutPressureSolveReadAsWcsph() {
+        SimulationState state = randomState(9, 6, 3);
+        state.warmStart.divergence.assign(6, 1.0f);
+        state.warmStart.density.assign(6, 2.0f);
+        FrameStats stats;
+        stats.pressureSolve.steps = 3;
+        const std::vector<std::uint8_t> bytes = encodeFrame(state, stats);
+        const FrameData older = decodeFrame(withoutChunk(bytes, chunkOffset(bytes, "PSOL")), kPath);
+        QVERIFY(older.state.warmStart.empty());
+        QCOMPARE(older.stats.pressureSolve.steps, std::uint64_t(0));
+        QCOMPARE(older.state.fluid.size(), std::size_t(6));
+        // A WCSPH frame has no PSOL chunk at all.
+        const std::vector<std::uint8_t> wcsph = encodeFrame(randomState(9, 6, 3), FrameStats{});
+        QCOMPARE(chunkOffset(wcsph, "PSOL"), wcsph.size());
+    }
+
+    void corruptPressureSolveChunkDetected() {
+        SimulationState state = randomState(9, 6, 3);
+        state.warmStart.divergence.assign(6, 1.0f);
+        state.warmStart.density.assign(6, 2.0f);
+        std::vector<std::uint8_t> bytes = encodeFrame(state, FrameStats{});
+        // Seven values claimed for six particles.
+        put<std::uint64_t>(bytes, chunkOffset(bytes, "PSOL") + 12, 7);
+        resealFrame(bytes);
+        const QString message = corruptMessage(bytes);
+        QVERIFY2(message.contains("chunk PSOL holds 7 warm-start values") &&
+                     message.contains("for 6 particles"),
+                 qPrintable(message));
+    }
+
     void framesWithoutSurroundingsReadAsUnmeasured() {
         SimulationState state = randomState(9, 4, 3);
         state.bubbles = twoBubbles();

@@ -126,6 +126,26 @@ private Q_SLOTS:
                              "[0.05, 0.6]"));
     }
 
+    void pressureSolverSettingsAreChecked() {
+        Scene scene = validScene();
+        scene.solver.method = "pcisph";
+        scene.sourcePath.clear();
+        const std::string unknown = validationError(scene);
+        QVERIFY2(contains(unknown, "solver.method") && contains(unknown, "\"dfsph\""),
+                 unknown.c_str());
+        scene.solver.method = "dfsph";
+        scene.solver.minIterations = 5;
+        scene.solver.maxIterations = 3;
+        QCOMPARE(validationError(scene), std::string("scene: solver.min_iterations = 5 exceeds "
+                                                     "solver.max_iterations = 3"));
+        scene.solver.maxIterations = 100;
+        scene.solver.minTimeStep = 0.01;
+        scene.solver.maxTimeStep = 0.005;
+        QCOMPARE(validationError(scene),
+                 std::string("scene: solver.min_time_step = 0.01 s exceeds "
+                             "solver.max_time_step = 0.005 s"));
+    }
+
     void bubbleRestitutionsAreOrdered() {
         Scene scene = validScene();
         scene.bubbles.approachRestitution = -0.1;
