@@ -108,6 +108,7 @@ Simulation::Simulation(Scene scene, SimulationState resumeFrom)
 Simulation::Simulation(Scene scene) : Simulation(std::move(scene), SimulationState{}) {
     state_.bodies = SceneSetup::initialBodyStates(scene_, bodies_.bodies());
     SceneSetup::fillFluid(scene_, bodies_.bodies(), state_);
+    water_->restoreWarmStart(state_.warmStart);
     lastFrameStats_ = measure(state_.fluid);
 }
 
@@ -325,6 +326,16 @@ void Simulation::noteFrame(int frame, std::size_t lost, double fastest,
     if (lost > 0)
         notices_.push_back(where + std::to_string(lost) +
                            " particles left the domain and were removed");
+    if (solve.steps > 0) {
+        std::ostringstream figures;
+        figures.precision(3);
+        figures << where << solve.steps << " steps, iterations per step "
+                << solve.meanIterations(solve.divergenceIterations) << " (divergence) and "
+                << solve.meanIterations(solve.densityIterations)
+                << " (density), density error " << percent(solve.meanDensityError)
+                << " on average, " << percent(solve.maxDensityError) << " at most";
+        notices_.push_back(figures.str());
+    }
     if (solve.unconvergedSteps > 0)
         notices_.push_back(where + "the density solve stopped at " +
                            SceneSchema::keyOf(&SolverSettings::maxIterations) + " in " +

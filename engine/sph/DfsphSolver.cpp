@@ -26,13 +26,19 @@ constexpr std::size_t kSolveSumGrain = 4096;
 //! sits at the free surface, where the velocity may diverge: the divergence solve leaves it
 //! alone, as Bender & Koschier's implementation does, or it would glue splashes to the water.
 constexpr std::uint32_t kInteriorNeighbours = 20;
+//! The wall pushes back with the particle's own pressure on both sides of the pair, as if mirrored
+//! (pᵢ/ρᵢ² + p_b/ρ_b² with p_b = pᵢ), as WCSPH's walls do by extrapolating it (Adami et al. 2012):
+//! with one side only (Akinci et al. 2012), the bottom layer of a resting pool is pushed into the
+//! floor by the column above at every step.
+constexpr float kWallPressureShare = 2.0f;
 //! Share of the last step's divergence stiffness the next step starts from: the compression
 //! the divergence solve removes comes mostly from the last step's residual, which the full value
 //! would overshoot (and an overshoot cannot be pulled back: the residual is clamped at zero).
 constexpr float kDivergenceWarmShare = 0.5f;
-//! The same for the density solve. The whole of it (the pressure a resting pool holds is the same
-//! from step to step) made a resting tank blow up within ten steps: measured in
-//! docs/VALIDATION.md "DFSPH".
+//! The same for the density solve (Bender & Koschier's implementation takes half too). All of it
+//! holds a resting pool with a fifth of the iterations, but a stiffness that a solve which only
+//! adds never lowers ratchets up: a dam break's bottom layer squirts out along the floor
+//! (docs/VALIDATION.md "Divergence-free SPH").
 constexpr float kDensityWarmShare = 0.5f;
 
 //! Σ f(i) over [0, n), split and added in the same order on any number of threads.
@@ -179,8 +185,11 @@ void DfsphSolver::prepareParticle(ParticleSet& fluid, std::size_t i, std::uint32
     nearestIsMoving_[i] = nearest.layer == &boundary_.movingLayer();
 
     // αᵢ: how much qᵢ alone changes Dρᵢ/Dt, its own velocity and its neighbours' together.
+    const Vec3f waterGradient = mass_ * gradientSum;
     const float denominator =
-        (mass_ * gradientSum + boundaryGradient).squaredNorm() + mass_ * mass_ * gradientSquares;
+        (waterGradient + kWallPressureShare * boundaryGradient)
+            .dot(waterGradient + boundaryGradient) +
+        mass_ * mass_ * gradientSquares;
     factors_[i] = denominator > 0.0f ? 1.0f / denominator : 0.0f;
     interior_[i] = count >= kInteriorNeighbours;
 }
@@ -218,22 +227,21 @@ double DfsphSolver::residuals(Solve solve, float dt, const float* densities) {
     const std::size_t n = velocities_.size();
     const float restDensity = static_cast<float>(settings_.restDensity);
     const double sum = deterministicSum(n, [&](std::size_t i) {
+        // Compression only: expansion is the free surface's, not an error, and water does not
+        // pull.
         float residual = 0.0f;
         float increment = 0.0f;
         if (solve == Solve::Divergence) {
             if (interior_[i]) {
-                residual = std::max(0.0f, densityRate(i));
+                residual = densityRate(i);
                 increment = residual * factors_[i];
             }
         } else {
-            // The compression the step would leave, ρ + Δt Dρ/Dt − ρ₀; expansion is the free
-            // surface's, not an error.
-            const float predicted = densities[i] + dt * densityRate(i);
-            residual = std::max(0.0f, predicted - restDensity);
+            residual = densities[i] + dt * densityRate(i) - restDensity;
             increment = residual * factors_[i] / dt;
         }
-        stiffness_[i] = increment;
-        return residual;
+        stiffness_[i] = std::max(increment, 0.0f);
+        return std::max(residual, 0.0f);
     });
     return n > 0 ? sum / double(n) : 0.0;
 }
@@ -243,7 +251,7 @@ void DfsphSolver::applyStiffness(const std::vector<float>& stiffness, std::vecto
     tbb::parallel_for(Range(0, n, kSolveGrain), [&](const Range& r) {
         for (std::size_t i = r.begin(); i != r.end(); ++i) {
             const float qi = stiffness[i];
-            Vec3f change = qi * boundaryGradient_[i];
+            Vec3f change = (kWallPressureShare * qi) * boundaryGradient_[i];
             Vec3f pairs = Vec3f::Zero();
             forEachWaterNeighbor(i, [&](std::uint32_t j, const Vec3f& d, float r2) {
                 pairs += (qi + stiffness[j]) * kernel_.gradientFromSquared(d, r2);
@@ -258,12 +266,11 @@ void DfsphSolver::applyStiffness(const std::vector<float>& stiffness, std::vecto
 
 DfsphSolver::Outcome DfsphSolver::iterate(Solve solve, float dt, double tolerance,
                                           std::vector<float>& total, const float* densities) {
-    // The warm start: the stiffness carried over, where the water is compressing now (else it
+    // The warm start: the stiffness carried over, inside the water only (at the free surface it
     // would push apart water that has since relaxed, and nothing could pull it back).
-    residuals(solve, dt, densities);
     tbb::parallel_for(Range(0, total.size(), kSolveGrain), [&](const Range& r) {
         for (std::size_t i = r.begin(); i != r.end(); ++i)
-            if (stiffness_[i] <= 0.0f)
+            if (!interior_[i])
                 total[i] = 0.0f;
     });
     applyStiffness(total, nullptr);
@@ -302,10 +309,9 @@ void DfsphSolver::solveDivergence(double lastTimeStep, StepReport& report) {
 }
 
 void DfsphSolver::applyNonPressureForces(const ParticleSet& fluid, float dt) {
-    const Vec3f gravityStep = dt * settings_.gravity.cast<float>();
+    const Vec3f gravity = settings_.gravity.cast<float>();
     const float water = static_cast<float>(settings_.xsphFactor) * mass_;
-    const float walls =
-        static_cast<float>(settings_.wallXsphFactor / settings_.restDensity);
+    const float walls = static_cast<float>(settings_.wallXsphFactor / settings_.restDensity);
     std::copy(velocities_.begin(), velocities_.end(), unsmoothed_.begin());
     tbb::parallel_for(Range(0, velocities_.size(), kSolveGrain), [&](const Range& r) {
         for (std::size_t i = r.begin(); i != r.end(); ++i) {
@@ -316,15 +322,30 @@ void DfsphSolver::applyNonPressureForces(const ParticleSet& fluid, float dt) {
                                (kernel_.value(std::sqrt(r2)) / fluid.densities[j]);
             });
             Vec3f towardWalls = Vec3f::Zero();
-            if (walls > 0.0f)
-                forEachBoundaryNeighbor(
-                    boundary_, kernel_.supportRadius(), i, sortedPositions_[i],
-                    [&](const BoundaryLayer& layer, std::uint32_t b, const Vec3f&, float r2) {
+            Vec3f support = Vec3f::Zero();
+            forEachBoundaryNeighbor(
+                boundary_, kernel_.supportRadius(), i, sortedPositions_[i],
+                [&](const BoundaryLayer& layer, std::uint32_t b, const Vec3f& d, float r2) {
+                    if (walls > 0.0f)
                         towardWalls += wallSmoothing(vi, layer, b, r2);
-                    });
-            velocities_[i] = vi + water * towardWater + walls * towardWalls + gravityStep;
+                    if (interior_[i])
+                        support += wallHydrostatic(layer, b, d, r2);
+                });
+            velocities_[i] = vi + water * towardWater + walls * towardWalls +
+                             dt * (gravity + support);
         }
     });
+}
+
+Vec3f DfsphSolver::wallHydrostatic(const BoundaryLayer& layer, std::uint32_t b, const Vec3f& d,
+                                   float r2) const {
+    // The wall's pressure is the particle's, solved for, plus the weight of the water between
+    // them, ρ₀ g·(x_b − xᵢ) (Adami et al. 2012, as WCSPH's walls): without it the water next to a
+    // side wall lacks the hydrostatic gradient its missing neighbours would give, and slides
+    // down the wall.
+    const float weight =
+        -settings_.gravity.cast<float>().dot(d) / static_cast<float>(settings_.restDensity);
+    return (-layer.psi()[b] * weight) * kernel_.gradientFromSquared(d, r2);
 }
 
 Vec3f DfsphSolver::wallSmoothing(const Vec3f& vi, const BoundaryLayer& layer, std::uint32_t b,
@@ -402,10 +423,12 @@ void DfsphSolver::computeBodyReactions(const ParticleSet&, double dt) {
                 // Both solves pushed water particle i off b by −qᵢ Ψ_b ∇W_ib; b takes the
                 // opposite momentum over the step.
                 const float stiffness = divergenceTotal_[i] + densityTotal_[i];
-                force += (mass_ * psi * stiffness * inverseStep) *
+                force += (kWallPressureShare * mass_ * psi * stiffness * inverseStep) *
                          kernel_.gradientFromSquared(d, r2);
                 force -= (mass_ * walls * inverseStep) *
                          wallSmoothing(unsmoothed_[i], layer, static_cast<std::uint32_t>(b), r2);
+                if (interior_[i])
+                    force -= mass_ * wallHydrostatic(layer, static_cast<std::uint32_t>(b), d, r2);
                 if (contacts_.boundaryParticle[i] == static_cast<std::int32_t>(b))
                     force -= inverseStep * contacts_.impulse[i];
             }

@@ -69,8 +69,8 @@ private:
     //! `densities` (kg/m³) are the step's, for the density solve.
     Outcome iterate(Solve solve, float dt, double tolerance, std::vector<float>& total,
                     const float* densities);
-    //! Each particle's residual and the stiffness increment that removes it (into stiffness_);
-    //! returns the average residual.
+    //! Each particle's compression and the stiffness increment that removes it (into
+    //! stiffness_); returns the average compression.
     double residuals(Solve solve, float dt, const float* densities);
     //! Dρᵢ/Dt of the current velocities over water and boundary particles.
     float densityRate(std::size_t i) const;
@@ -84,6 +84,10 @@ private:
     //! Ψ_b W_ib (v_b − vᵢ): boundary particle b's share of the walls' XSPH for velocity vi.
     Vec3f wallSmoothing(const Vec3f& vi, const BoundaryLayer& layer, std::uint32_t b,
                         float r2) const;
+    //! The acceleration of water particle i from the hydrostatic part of boundary particle b's
+    //! pressure, d = xᵢ − x_b.
+    Vec3f wallHydrostatic(const BoundaryLayer& layer, std::uint32_t b, const Vec3f& d,
+                          float r2) const;
     template <class Visit>
     void forEachWaterNeighbor(std::size_t i, Visit&& visit) const;
 
