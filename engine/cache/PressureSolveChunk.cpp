@@ -33,10 +33,10 @@ void PressureSolveChunk::read(const std::uint8_t* data, std::size_t size, const 
     // The warm start belongs to the particles as the step left them; inflow emitted after it
     // may have added some (they start from zero), never removed any.
     if (n > particles || size != sizeof(std::uint64_t) + 2 * n * sizeof(float) + kFiguresSize)
-        throw Error(ErrorKind::CacheCorrupt,
-                    path + ": chunk PSOL holds " + std::to_string(n) +
-                        " warm-start values in " + std::to_string(size) + " bytes for " +
-                        std::to_string(particles) + " particles");
+        throw Error(ErrorKind::CacheCorrupt, path + ": chunk PSOL holds " + std::to_string(n) +
+                                                 " warm-start values in " + std::to_string(size) +
+                                                 " bytes for " + std::to_string(particles) +
+                                                 " particles");
     for (std::vector<float>* values : {&warmStart.divergence, &warmStart.density}) {
         values->resize(static_cast<std::size_t>(n));
         std::memcpy(values->data(), in.take(n * sizeof(float)), n * sizeof(float));

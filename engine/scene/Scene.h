@@ -27,13 +27,13 @@ struct SolverSettings {
     double maxDensityError = 0.2; //!< stop the bake when |ρ/ρ₀ − 1| exceeds this (blow-up guard)
     Vec3d gravity = Vec3d(0.0, -9.81, 0.0); //!< m/s²
     // Divergence-free SPH only.
-    double densityErrorTarget = 0.0001;   //!< average |ρ/ρ₀ − 1| the density solve stops at
+    double densityErrorTarget = 0.0001; //!< average |ρ/ρ₀ − 1| the density solve stops at
     double divergenceErrorTarget = 0.001; //!< average Δt·(Dρ/Dt)/ρ₀ the divergence solve stops at
     int minIterations = 2;                //!< per solve
     int maxIterations = 100;              //!< per solve
     double flowCflFactor = 0.4;           //!< λ in Δt = λ Δx / |v|max
-    double xsphFactor = 0.01;             //!< XSPH viscosity between water particles
-    double wallXsphFactor = 0.0;          //!< XSPH toward the walls' velocity (friction)
+    double xsphFactor = 0.3;              //!< XSPH viscosity between water particles
+    double wallXsphFactor = 0.05;         //!< XSPH toward the walls' velocity (friction)
     double minTimeStep = 0.0001;          //!< s
     double maxTimeStep = 0.005;           //!< s
 

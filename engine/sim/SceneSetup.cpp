@@ -102,7 +102,6 @@ void SceneSetup::fillFluid(const Scene& scene, const std::vector<RigidBody>& bod
     const double gravity = -scene.solver.gravity.y();
     const Aabb domain = scene.domain();
     ParticleSet& fluid = state.fluid;
-    std::vector<float> restPressures; // Pa, the hydrostatic pressure each particle starts at
     for (std::size_t block = 0; block < scene.fluidBlocks.size(); ++block) {
         const FluidBlock& b = scene.fluidBlocks[block];
         Vec3i count;
@@ -117,28 +116,11 @@ void SceneSetup::fillFluid(const Scene& scene, const std::vector<RigidBody>& bod
                         insideAnyObstacle(scene, x, 0.5 * dx) || insideABody(x, 0.25 * dx))
                         continue;
                     const double depth = std::max(0.0, b.max.y() - x.y());
-                    const double pressure = scene.solver.restDensity * gravity * depth;
-                    const float density = equationOfState.densityForPressure(pressure);
+                    const float density = equationOfState.densityForPressure(
+                        scene.solver.restDensity * gravity * depth);
                     fluid.push(x.cast<float>(), velocity, density, state.nextParticleId++);
-                    restPressures.push_back(static_cast<float>(pressure));
                 }
     }
-    if (scene.solver.divergenceFree())
-        startFromRestPressure(scene.solver, restPressures, state.warmStart);
-}
-
-void SceneSetup::startFromRestPressure(const SolverSettings& solver,
-                                       const std::vector<float>& pressures,
-                                       PressureWarmStart& warmStart) {
-    // The density solve starts from κ = p/ρ₀², the pressure that holds the water up, rather than
-    // from nothing: from nothing, its first steps let the whole pool fall onto the floor and
-    // bounce, because a Jacobi solve builds the pressure of a deep pool one layer per iteration.
-    const float perDensitySquared =
-        static_cast<float>(1.0 / (solver.restDensity * solver.restDensity));
-    warmStart.density.resize(pressures.size());
-    for (std::size_t i = 0; i < pressures.size(); ++i)
-        warmStart.density[i] = pressures[i] * perDensitySquared;
-    warmStart.divergence.assign(pressures.size(), 0.0f);
 }
 
 } // namespace airtrap

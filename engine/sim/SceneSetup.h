@@ -27,17 +27,9 @@ public:
     //! Fills every fluid block on the particle lattice, skipping points outside the container,
     //! inside obstacles or `bodies` (buildBodies' list; or closer than half a spacing to them) or
     //! already filled by an earlier block. Densities start hydrostatic (inverse Tait at the
-    //! depth below the block's top), so a resting pool starts at rest; for DFSPH the density
-    //! solve's warm start holds the same hydrostatic pressure.
+    //! depth below the block's top), so a resting pool starts at rest (DFSPH sums its own).
     static void fillFluid(const Scene& scene, const std::vector<RigidBody>& bodies,
                           SimulationState& state);
-
-private:
-    //! The warm start of a divergence-free solver at the hydrostatic `pressures` (Pa, one per
-    //! particle).
-    static void startFromRestPressure(const SolverSettings& solver,
-                                      const std::vector<float>& pressures,
-                                      PressureWarmStart& warmStart);
 };
 
 } // namespace airtrap

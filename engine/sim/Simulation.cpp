@@ -90,8 +90,7 @@ std::string percent(double fraction) {
 } // namespace
 
 Simulation::Simulation(Scene scene, SimulationState resumeFrom)
-    : scene_(std::move(scene)), state_(std::move(resumeFrom)),
-      water_(makePressureSolver(scene_)),
+    : scene_(std::move(scene)), state_(std::move(resumeFrom)), water_(makePressureSolver(scene_)),
       bodies_(SceneSetup::buildBodies(scene_), SceneSetup::sceneryCount(scene_), scene_.solver,
               scene_.bubbles, water_->kernel()) {
     water_->placeBoundary(bodies_.bodies());
@@ -108,7 +107,6 @@ Simulation::Simulation(Scene scene, SimulationState resumeFrom)
 Simulation::Simulation(Scene scene) : Simulation(std::move(scene), SimulationState{}) {
     state_.bodies = SceneSetup::initialBodyStates(scene_, bodies_.bodies());
     SceneSetup::fillFluid(scene_, bodies_.bodies(), state_);
-    water_->restoreWarmStart(state_.warmStart);
     lastFrameStats_ = measure(state_.fluid);
 }
 
@@ -289,14 +287,14 @@ void Simulation::tallySolve(const StepReport& report, int frame, PressureSolveSt
     solve.maxDensityError = std::max(solve.maxDensityError, report.densityError);
     if (report.stepAtMinimum && !warnedMinimumStep_) {
         warnedMinimumStep_ = true;
-        notices_.push_back(
-            "frame " + std::to_string(frame) + ": the water reached " +
-            std::to_string(report.maxSpeed) + " m/s at " + formatVector(report.fastestAt) +
-            ", which asks for a step below " + SceneSchema::keyOf(&SolverSettings::minTimeStep) +
-            " = " + std::to_string(scene_.solver.minTimeStep) +
-            " s; the step is held there, so the fastest water moves more than " +
-            SceneSchema::keyOf(&SolverSettings::flowCflFactor) +
-            " spacings per step (said once per bake)");
+        notices_.push_back("frame " + std::to_string(frame) + ": the water reached " +
+                           std::to_string(report.maxSpeed) + " m/s at " +
+                           formatVector(report.fastestAt) + ", which asks for a step below " +
+                           SceneSchema::keyOf(&SolverSettings::minTimeStep) + " = " +
+                           std::to_string(scene_.solver.minTimeStep) +
+                           " s; the step is held there, so the fastest water moves more than " +
+                           SceneSchema::keyOf(&SolverSettings::flowCflFactor) +
+                           " spacings per step (said once per bake)");
     }
     if (report.densityConverged) {
         unconvergedInARow_ = 0;
@@ -331,9 +329,9 @@ void Simulation::noteFrame(int frame, std::size_t lost, double fastest,
         figures.precision(3);
         figures << where << solve.steps << " steps, iterations per step "
                 << solve.meanIterations(solve.divergenceIterations) << " (divergence) and "
-                << solve.meanIterations(solve.densityIterations)
-                << " (density), density error " << percent(solve.meanDensityError)
-                << " on average, " << percent(solve.maxDensityError) << " at most";
+                << solve.meanIterations(solve.densityIterations) << " (density), density error "
+                << percent(solve.meanDensityError) << " on average, "
+                << percent(solve.maxDensityError) << " at most";
         notices_.push_back(figures.str());
     }
     if (solve.unconvergedSteps > 0)
@@ -342,11 +340,10 @@ void Simulation::noteFrame(int frame, std::size_t lost, double fastest,
                            std::to_string(solve.unconvergedSteps) + " of " +
                            std::to_string(solve.steps) + " steps (largest density error " +
                            percent(solve.maxDensityError) + ")");
-    if (!scene_.solver.divergenceFree() && fastest > scene_.solver.maxSpeed &&
-        !warnedMaxSpeed_) {
+    if (!scene_.solver.divergenceFree() && fastest > scene_.solver.maxSpeed && !warnedMaxSpeed_) {
         warnedMaxSpeed_ = true;
-        notices_.push_back(where + "the water reached " + std::to_string(fastest) +
-                           " m/s, above " + SceneSchema::keyOf(&SolverSettings::maxSpeed) + " = " +
+        notices_.push_back(where + "the water reached " + std::to_string(fastest) + " m/s, above " +
+                           SceneSchema::keyOf(&SolverSettings::maxSpeed) + " = " +
                            std::to_string(scene_.solver.maxSpeed) +
                            " m/s on which the speed of sound is based, so the water compresses "
                            "more than the method's 1 %; raise it (said once per bake)");

@@ -32,9 +32,8 @@ public:
     };
 
     static constexpr std::array<std::string_view, Count> kNames = {
-        "neighbours",    "density",        "forces",         "bodies",
-        "integrate",     "bubble_forces",  "bubble_pockets", "bubble_deletion",
-        "divergence_solve"};
+        "neighbours",    "density",        "forces",          "bodies",          "integrate",
+        "bubble_forces", "bubble_pockets", "bubble_deletion", "divergence_solve"};
 
     //! Times one phase for as long as it lives.
     class Scope {

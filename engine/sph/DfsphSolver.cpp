@@ -186,10 +186,9 @@ void DfsphSolver::prepareParticle(ParticleSet& fluid, std::size_t i, std::uint32
 
     // αᵢ: how much qᵢ alone changes Dρᵢ/Dt, its own velocity and its neighbours' together.
     const Vec3f waterGradient = mass_ * gradientSum;
-    const float denominator =
-        (waterGradient + kWallPressureShare * boundaryGradient)
-            .dot(waterGradient + boundaryGradient) +
-        mass_ * mass_ * gradientSquares;
+    const float denominator = (waterGradient + kWallPressureShare * boundaryGradient)
+                                  .dot(waterGradient + boundaryGradient) +
+                              mass_ * mass_ * gradientSquares;
     factors_[i] = denominator > 0.0f ? 1.0f / denominator : 0.0f;
     interior_[i] = count >= kInteriorNeighbours;
 }
@@ -277,8 +276,8 @@ DfsphSolver::Outcome DfsphSolver::iterate(Solve solve, float dt, double toleranc
     Outcome outcome;
     for (;;) {
         outcome.averageResidual = residuals(solve, dt, densities);
-        const bool done = outcome.averageResidual <= tolerance &&
-                          outcome.iterations >= settings_.minIterations;
+        const bool done =
+            outcome.averageResidual <= tolerance && outcome.iterations >= settings_.minIterations;
         if (done)
             return outcome;
         if (outcome.iterations >= settings_.maxIterations) {
@@ -295,14 +294,13 @@ void DfsphSolver::solveDivergence(double lastTimeStep, StepReport& report) {
     // the tolerance bounds. Before the first step the longest step is the strictest guess.
     const double dt = lastTimeStep > 0.0 ? lastTimeStep : settings_.maxTimeStep;
     const double tolerance = settings_.divergenceErrorTarget * settings_.restDensity / dt;
-    const Outcome outcome = iterate(Solve::Divergence, static_cast<float>(dt), tolerance,
-                                    divergenceTotal_, nullptr);
+    const Outcome outcome =
+        iterate(Solve::Divergence, static_cast<float>(dt), tolerance, divergenceTotal_, nullptr);
     report.divergenceIterations = outcome.iterations;
     // The speed the step must resolve: the one gravity leads to over it (XSPH only averages).
     const Vec3f gravityStep = static_cast<float>(dt) * settings_.gravity.cast<float>();
-    const Fastest fastest = findFastest(velocities_.size(), [&](std::size_t i) {
-        return (velocities_[i] + gravityStep).norm();
-    });
+    const Fastest fastest = findFastest(
+        velocities_.size(), [&](std::size_t i) { return (velocities_[i] + gravityStep).norm(); });
     report.maxSpeed = fastest.speed;
     if (fastest.particle < velocities_.size())
         report.fastestAt = sortedPositions_[fastest.particle];
@@ -318,8 +316,8 @@ void DfsphSolver::applyNonPressureForces(const ParticleSet& fluid, float dt) {
             const Vec3f vi = unsmoothed_[i];
             Vec3f towardWater = Vec3f::Zero();
             forEachWaterNeighbor(i, [&](std::uint32_t j, const Vec3f&, float r2) {
-                towardWater += (unsmoothed_[j] - vi) *
-                               (kernel_.value(std::sqrt(r2)) / fluid.densities[j]);
+                towardWater +=
+                    (unsmoothed_[j] - vi) * (kernel_.value(std::sqrt(r2)) / fluid.densities[j]);
             });
             Vec3f towardWalls = Vec3f::Zero();
             Vec3f support = Vec3f::Zero();
@@ -331,8 +329,8 @@ void DfsphSolver::applyNonPressureForces(const ParticleSet& fluid, float dt) {
                     if (interior_[i])
                         support += wallHydrostatic(layer, b, d, r2);
                 });
-            velocities_[i] = vi + water * towardWater + walls * towardWalls +
-                             dt * (gravity + support);
+            velocities_[i] =
+                vi + water * towardWater + walls * towardWalls + dt * (gravity + support);
         }
     });
 }

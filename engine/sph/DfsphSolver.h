@@ -106,15 +106,15 @@ private:
     PositionArrays sortedPositions_;
     ParticleSet reorderScratch_;
     NeighborList neighbors_;
-    std::vector<Vec3f> velocities_;       //!< solved in place, written back by integrate()
-    std::vector<Vec3f> unsmoothed_;       //!< before the non-pressure forces
-    std::vector<float> factors_;          //!< αᵢ = 1 / (|Σⱼ m∇Wᵢⱼ + Bᵢ|² + Σⱼ |m∇Wᵢⱼ|²)
-    std::vector<std::uint8_t> interior_;  //!< enough neighbours for the divergence solve
-    std::vector<Vec3f> boundaryGradient_; //!< Bᵢ = Σ_b Ψ_b ∇W_ib
-    std::vector<float> boundaryRate_;     //!< Σ_b Ψ_b v_b·∇W_ib
-    std::vector<float> stiffness_;        //!< this iteration's increment
-    std::vector<float> divergenceTotal_;  //!< q of the divergence solve, summed
-    std::vector<float> densityTotal_;     //!< q of the density solve, summed
+    std::vector<Vec3f> velocities_; //!< solved in place, written back by integrate()
+    std::vector<Vec3f> unsmoothed_; //!< before the non-pressure forces
+    std::vector<float> factors_; //!< αᵢ = 1 / (|Σⱼ m∇Wᵢⱼ + Bᵢ|² + Σⱼ |m∇Wᵢⱼ|²)
+    std::vector<std::uint8_t> interior_;        //!< enough neighbours for the divergence solve
+    std::vector<Vec3f> boundaryGradient_;       //!< Bᵢ = Σ_b Ψ_b ∇W_ib
+    std::vector<float> boundaryRate_;           //!< Σ_b Ψ_b v_b·∇W_ib
+    std::vector<float> stiffness_;              //!< this iteration's increment
+    std::vector<float> divergenceTotal_;        //!< q of the divergence solve, summed
+    std::vector<float> densityTotal_;           //!< q of the density solve, summed
     std::vector<std::int32_t> nearestBoundary_; //!< within the contact radius, −1 for none
     std::vector<std::uint8_t> nearestIsMoving_; //!< in the moving layer rather than the static
     ContactRecords contacts_;

@@ -1,8 +1,9 @@
 // A resting tank: after settling, the pressure at depth d equals ρ₀ g d within 5 %, no particle
-// leaves, the particle count stays constant and the water is at rest.
+// leaves, the particle count stays constant and the water is at rest; with either pressure solver
+// (WCSPH's pressure from the equation of state, DFSPH's from its density solve).
 #include "sim/Simulation.h"
-#include "sph/TaitEquationOfState.h"
 #include "support/SceneBuilder.h"
+#include "support/SolverMethods.h"
 #include "support/TestMain.h"
 
 #include <QtTest>
@@ -19,7 +20,7 @@ constexpr double kTankSpacing = 0.02; // m
 constexpr double kDepth = 0.4;        // m of water
 constexpr double kSettleSeconds = 1.0;
 
-Scene tank() {
+Scene tank(const std::string& method) {
     constexpr double kFps = 10.0;
     Scene scene = SceneBuilder()
                       .spacing(kTankSpacing)
@@ -29,6 +30,7 @@ Scene tank() {
                       .water({0.0, 0.0, 0.0}, {0.4, kDepth, 0.4})
                       .build();
     scene.name = "hydrostatic test";
+    scene.solver.method = method;
     return scene;
 }
 
@@ -38,8 +40,11 @@ class TestHydrostatic : public QObject {
     Q_OBJECT
 
 private Q_SLOTS:
+    void pressureGrowsWithDepthAsRhoGD_data() { test::addSolverMethodRows(); }
+
     void pressureGrowsWithDepthAsRhoGD() {
-        Simulation simulation(tank());
+        QFETCH(QString, method);
+        Simulation simulation(tank(method.toStdString()));
         const std::size_t count = simulation.state().fluid.size();
         QCOMPARE(count, std::size_t(20 * 20 * 20));
         Interrupter interrupter;
@@ -67,15 +72,14 @@ private Q_SLOTS:
         }
         surface += 0.5f * float(kTankSpacing);
 
-        // Mean pressure per layer, away from the side walls, from the equation of state.
-        const TaitEquationOfState equationOfState(simulation.scene().solver);
+        // Mean pressure per layer, away from the side walls, as the solver has it.
         std::map<int, std::pair<double, int>> layers;
         for (std::size_t i = 0; i < fluid.size(); ++i) {
             const Vec3f& x = fluid.positions[i];
             if (x.x() < 0.1f || x.x() > 0.3f || x.z() < 0.1f || x.z() > 0.3f)
                 continue;
             const int layer = int(std::floor((surface - x.y()) / kTankSpacing));
-            layers[layer].first += equationOfState.pressure(fluid.densities[i]);
+            layers[layer].first += simulation.solver().pressure(fluid, i);
             layers[layer].second += 1;
         }
         const double rhoG = 1000.0 * 9.81;

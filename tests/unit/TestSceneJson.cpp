@@ -112,8 +112,9 @@ private Q_SLOTS:
         QVERIFY2(contains(message, "scene.json: solver.particle_spacng: unknown key; did you mean "
                                    "\"particle_spacing\"?"),
                  message.c_str());
-        QVERIFY2(contains(message, "Valid keys of solver: method, particle_spacing, support_factor"),
-                 message.c_str());
+        QVERIFY2(
+            contains(message, "Valid keys of solver: method, particle_spacing, support_factor"),
+            message.c_str());
 
         json = validJson();
         json["solvr"] = nlohmann::json::object();

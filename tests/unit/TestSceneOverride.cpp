@@ -89,9 +89,10 @@ private Q_SLOTS:
 
     void unknownKeyListsTheSectionsKeys() {
         std::string message = overrideError("solver.particle_spacng=0.02");
-        QVERIFY2(contains(message, "--set: solver.particle_spacng: unknown key; did you mean "
-                                   "\"particle_spacing\"? Valid keys of solver: particle_spacing, "
-                                   "support_factor, rest_density"),
+        QVERIFY2(contains(message,
+                          "--set: solver.particle_spacng: unknown key; did you mean "
+                          "\"particle_spacing\"? Valid keys of solver: method, particle_spacing, "
+                          "support_factor, rest_density"),
                  message.c_str());
         message = overrideError("solvr.fps=3");
         QVERIFY2(contains(message, "--set: solvr: unknown key; did you mean \"solver\"? Valid "

@@ -141,9 +141,8 @@ private Q_SLOTS:
         scene.solver.maxIterations = 100;
         scene.solver.minTimeStep = 0.01;
         scene.solver.maxTimeStep = 0.005;
-        QCOMPARE(validationError(scene),
-                 std::string("scene: solver.min_time_step = 0.01 s exceeds "
-                             "solver.max_time_step = 0.005 s"));
+        QCOMPARE(validationError(scene), std::string("scene: solver.min_time_step = 0.01 s exceeds "
+                                                     "solver.max_time_step = 0.005 s"));
     }
 
     void bubbleRestitutionsAreOrdered() {
