@@ -361,6 +361,19 @@ void Simulation::emitInflow(double from, double to) {
         emitter.emit(from, to, state_);
 }
 
+std::string Simulation::densityErrorCause(const StepReport& report) const {
+    const std::string speed = "the water moves at " + std::to_string(report.maxSpeed) + " m/s";
+    if (scene_.solver.divergenceFree())
+        return speed + " at " + formatVector(report.fastestAt) + "; steps too long for it (lower " +
+               SceneSchema::keyOf(&SolverSettings::flowCflFactor) + " or " +
+               SceneSchema::keyOf(&SolverSettings::maxTimeStep) +
+               "), or a body much lighter or heavier than water, which DFSPH does not yet hold "
+               "at its large step.";
+    return speed + ", too fast for " + SceneSchema::keyOf(&SolverSettings::maxSpeed) + " = " +
+           std::to_string(scene_.solver.maxSpeed) + " m/s (raise it), or " +
+           SceneSchema::keyOf(&SolverSettings::cflFactor) + " is too large.";
+}
+
 void Simulation::checkHealth(const StepReport& report, double timeToFrameEnd, int frame,
                              std::size_t lost, std::size_t particlesAtStart) const {
     // Called after every step: the messages and the keys they name are made only on a failure.
@@ -379,10 +392,8 @@ void Simulation::checkHealth(const StepReport& report, double timeToFrameEnd, in
         throw Error(ErrorKind::SimulationBlowUp,
                     where() + "density error " + percent(report.maxDensityDeviation) + " exceeds " +
                         SceneSchema::keyOf(&SolverSettings::maxDensityError) + " (" +
-                        percent(scene_.solver.maxDensityError) + "). Likely cause: the water " +
-                        "moves at " + std::to_string(report.maxSpeed) + " m/s, too fast for " +
-                        maxSpeed() + " = " + std::to_string(scene_.solver.maxSpeed) +
-                        " m/s (raise it), or " + cflFactor() + " is too large.");
+                        percent(scene_.solver.maxDensityError) +
+                        "). Likely cause: " + densityErrorCause(report));
     if (lost > std::max<std::size_t>(10, std::size_t(kMaxLostShare * particlesAtStart)))
         throw Error(ErrorKind::SimulationBlowUp,
                     where() + std::to_string(lost) +

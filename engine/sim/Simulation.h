@@ -64,6 +64,8 @@ public:
     StepPhases& phases() { return phases_; }
 
 private:
+    //! Why the water may have compressed beyond the blow-up guard, naming what to change.
+    std::string densityErrorCause(const StepReport& report) const;
     //! Throws Error(SimulationBlowUp) naming the frame and the likely cause.
     void checkHealth(const StepReport& report, double timeToFrameEnd, int frame, std::size_t lost,
                      std::size_t particlesAtStart) const;
