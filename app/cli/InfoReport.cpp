@@ -132,11 +132,26 @@ nlohmann::ordered_json InfoReport::bubblesJson() const {
             {"items", items}};
 }
 
+nlohmann::ordered_json InfoReport::pressureSolveJson() const {
+    const PressureSolveStats& solve = frame_.stats.pressureSolve;
+    return {{"steps", solve.steps},
+            {"divergence_iterations_per_step", solve.meanIterations(solve.divergenceIterations)},
+            {"density_iterations_per_step", solve.meanIterations(solve.densityIterations)},
+            {"mean_density_error", solve.meanDensityError},
+            {"max_density_error", solve.maxDensityError},
+            {"unconverged_steps", solve.unconvergedSteps}};
+}
+
 nlohmann::ordered_json InfoReport::toJson() const {
-    return {{"frame", frame_.state.frame}, {"time", frame_.state.time},
-            {"steps", frame_.state.steps}, {"fluid", fluidJson()},
-            {"bodies", bodiesJson()},      {"bubbles", bubblesJson()},
-            {"timing", timingJson()},      {"cache", cacheJson()}};
+    nlohmann::ordered_json json = {{"frame", frame_.state.frame}, {"time", frame_.state.time},
+                                   {"steps", frame_.state.steps}, {"fluid", fluidJson()},
+                                   {"bodies", bodiesJson()},      {"bubbles", bubblesJson()},
+                                   {"timing", timingJson()}};
+    // Frames of divergence-free bakes only.
+    if (frame_.stats.pressureSolve.steps > 0)
+        json["pressure_solve"] = pressureSolveJson();
+    json["cache"] = cacheJson();
+    return json;
 }
 
 void InfoReport::printText(std::ostream& out) const {
@@ -160,6 +175,13 @@ void InfoReport::printText(std::ostream& out) const {
         out << "bubbles " << state.bubbles.size() << " alive, " << state.nextBubbleId
             << " created, " << state.bubblesDeleted.deletedTotal() << " deleted ("
             << perRuleText(state.bubblesDeleted) << ")\n";
+    const PressureSolveStats& solve = frame_.stats.pressureSolve;
+    if (solve.steps > 0)
+        out << "solver  DFSPH, " << solve.steps << " steps, iterations per step "
+            << fixed(solve.meanIterations(solve.divergenceIterations), 1) << " (divergence) "
+            << fixed(solve.meanIterations(solve.densityIterations), 1)
+            << " (density), density error " << fixed(100.0 * solve.meanDensityError, 4)
+            << " % mean, " << fixed(100.0 * solve.maxDensityError, 4) << " % max\n";
     out << "timing  " << fixed(frame_.stats.wallSeconds, 3) << " s wall";
     for (const auto& [phase, seconds] : frame_.stats.phaseSeconds)
         out << ", " << phase << " " << fixed(seconds, 3) << " s";

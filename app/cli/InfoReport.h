@@ -14,7 +14,8 @@ class InfoReport {
 public:
     InfoReport(const FrameData& frame, const CacheManifest& manifest, std::string directory);
 
-    //! `frame`, `time`, `steps`, `fluid`, `bodies`, `bubbles`, `timing`, `cache`.
+    //! `frame`, `time`, `steps`, `fluid`, `bodies`, `bubbles`, `timing`, `pressure_solve` (DFSPH
+    //! frames only), `cache`.
     nlohmann::ordered_json toJson() const;
     //! A few lines for a terminal.
     void printText(std::ostream& out) const;
@@ -25,6 +26,8 @@ private:
     //! Alive bubbles with their totals since frame 1 and this frame's creations and deletions.
     nlohmann::ordered_json bubblesJson() const;
     nlohmann::ordered_json timingJson() const;
+    //! The frame's DFSPH solves: steps, iterations per step, density error, unconverged steps.
+    nlohmann::ordered_json pressureSolveJson() const;
     nlohmann::ordered_json cacheJson() const;
 
     const FrameData& frame_;

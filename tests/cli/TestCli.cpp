@@ -219,6 +219,25 @@ private Q_SLOTS:
         QCOMPARE_EXIT(runCli(args({"info", root_})), 2); // not a cache
     }
 
+    void infoReportsADivergenceFreeBakesSolves() {
+        bake(cache_, {"--set", "solver.method=dfsph"});
+        const CliResult result = runCli(args({"info", cache_, "--json"}));
+        QCOMPARE_EXIT(result, 0);
+        const nlohmann::json solve =
+            nlohmann::json::parse(result.out.toStdString()).at("pressure_solve");
+        QVERIFY(solve.at("steps").get<int>() >= 1);
+        QVERIFY(solve.at("divergence_iterations_per_step").get<double>() >= 2.0);
+        QVERIFY(solve.at("density_iterations_per_step").get<double>() >= 2.0);
+        QVERIFY(solve.at("max_density_error").get<double>() <= 0.0001);
+        QCOMPARE(solve.at("unconverged_steps").get<int>(), 0);
+        QVERIFY_CONTAINS(runCli(args({"info", cache_})).out, "solver  DFSPH, ");
+        // A WCSPH bake's frames have no such block.
+        const std::string wcsph = cache_ + "_wcsph";
+        bake(wcsph);
+        const CliResult other = runCli(args({"info", wcsph, "--json"}));
+        QVERIFY(!nlohmann::json::parse(other.out.toStdString()).contains("pressure_solve"));
+    }
+
     void infoReportsTheFramesBubbles() {
         bake(cache_);
         // Bubbles written into frame 4 as a bake with bubbles would leave them: two alive, five
