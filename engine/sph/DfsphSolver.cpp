@@ -376,7 +376,7 @@ void DfsphSolver::computeDensities(ParticleSet& fluid, std::uint64_t, double dt,
     report.densityConverged = outcome.converged;
 }
 
-void DfsphSolver::computeForces(const ParticleSet&, double dt, StepReport& report) {
+void DfsphSolver::computeForces(const ParticleSet&, double dt, StepReport&) {
     const std::size_t n = velocities_.size();
     const bool recordContacts = boundary_.hasDynamicBodies();
     if (recordContacts)
@@ -398,7 +398,6 @@ void DfsphSolver::computeForces(const ParticleSet&, double dt, StepReport& repor
                 BoundaryContact::record(i, nearest, impulse, boundary_, contacts_);
         }
     });
-    report.maxAcceleration = settings_.gravity.norm();
 }
 
 void DfsphSolver::computeBodyReactions(const ParticleSet&, double dt) {

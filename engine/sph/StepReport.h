@@ -8,7 +8,7 @@ namespace airtrap {
 
 struct StepReport {
     double timeStep = 0.0;            //!< s, Δt actually taken
-    double maxAcceleration = 0.0;     //!< m/s², without contact impulses (feeds the next Δt)
+    double maxAcceleration = 0.0;     //!< m/s², without contact impulses (WCSPH: the next Δt)
     double maxSpeed = 0.0;            //!< m/s, at the start of the step (DFSPH: predicted)
     Vec3f fastestAt = Vec3f::Zero();  //!< m, where maxSpeed was reached (DFSPH)
     bool stepAtMinimum = false;       //!< the flow asked for a step below the minimum (DFSPH)

@@ -26,6 +26,35 @@ Scene collapsingColumn() {
         .build();
 }
 
+//! What a bake that stops on the blow-up guard left: the guard's message, the frames written,
+//! the notices it logged and its cache folder.
+struct FailedBake {
+    QString message;
+    std::vector<int> written;
+    std::vector<std::string> notices;
+    std::string cacheDir;
+};
+
+//! Bakes `scene` into `dir` until the guard stops it (message empty if it never does).
+FailedBake bakeUntilStopped(const Scene& scene, const QTemporaryDir& dir) {
+    FailedBake result;
+    BakeOptions options;
+    options.cacheDir = result.cacheDir = dir.filePath("cache").toStdString();
+    Baker baker(scene, options);
+    baker.onFrame([&](int frame, const FrameStats&) { result.written.push_back(frame); });
+    baker.onMessage([&](const std::string& notice) { result.notices.push_back(notice); });
+    Interrupter interrupter;
+    try {
+        baker.run(interrupter);
+    } catch (const Error& error) {
+        if (error.kind() == ErrorKind::SimulationBlowUp)
+            result.message = QString::fromStdString(error.what());
+        else
+            throw;
+    }
+    return result;
+}
+
 } // namespace
 
 class TestBlowUpGuard : public QObject {
@@ -48,19 +77,7 @@ private Q_SLOTS:
         // % at the bottom).
         scene.solver.maxDensityError = 0.006;
         QTemporaryDir dir;
-        BakeOptions options;
-        options.cacheDir = dir.filePath("cache").toStdString();
-        Baker baker(scene, options);
-        std::vector<int> written;
-        baker.onFrame([&](int frame, const FrameStats&) { written.push_back(frame); });
-        Interrupter interrupter;
-        QString message;
-        try {
-            baker.run(interrupter);
-        } catch (const Error& error) {
-            QCOMPARE(error.kind(), ErrorKind::SimulationBlowUp);
-            message = QString::fromStdString(error.what());
-        }
+        const auto [message, written, notices, cacheDir] = bakeUntilStopped(scene, dir);
         QVERIFY2(!message.isEmpty(), "the bake finished although the bound was exceeded");
         const int failedFrame = written.back() + 1;
         QVERIFY2(message.startsWith(QString("frame %1 ").arg(failedFrame)), qPrintable(message));
@@ -68,7 +85,7 @@ private Q_SLOTS:
         QVERIFY2(message.contains("Likely cause"), qPrintable(message));
         QVERIFY(written.size() >= 2); // frame 1 and at least one simulated frame
 
-        const FrameCache cache = FrameCache::open(options.cacheDir);
+        const FrameCache cache = FrameCache::open(cacheDir);
         QVERIFY(cache.manifest().status.rfind("failed: frame", 0) == 0);
         QCOMPARE(cache.frames(), written);
         for (int frame : written)
@@ -84,21 +101,7 @@ private Q_SLOTS:
         scene.solver.maxIterations = 1;
         scene.solver.densityErrorTarget = 1e-6;
         QTemporaryDir dir;
-        BakeOptions options;
-        options.cacheDir = dir.filePath("cache").toStdString();
-        Baker baker(scene, options);
-        std::vector<int> written;
-        std::vector<std::string> notices;
-        baker.onFrame([&](int frame, const FrameStats&) { written.push_back(frame); });
-        baker.onMessage([&](const std::string& notice) { notices.push_back(notice); });
-        Interrupter interrupter;
-        QString message;
-        try {
-            baker.run(interrupter);
-        } catch (const Error& error) {
-            QCOMPARE(error.kind(), ErrorKind::SimulationBlowUp);
-            message = QString::fromStdString(error.what());
-        }
+        const auto [message, written, notices, cacheDir] = bakeUntilStopped(scene, dir);
         QVERIFY2(!message.isEmpty(), "the bake finished although no solve converged");
         QVERIFY(written.size() >= 2);
         QVERIFY2(message.startsWith(QString("frame %1 ").arg(written.back() + 1)),
@@ -112,7 +115,7 @@ private Q_SLOTS:
                  notices[0].c_str());
         QVERIFY2(QString::fromStdString(notices[1]).contains("the density solve stopped at"),
                  notices[1].c_str());
-        QCOMPARE(FrameCache::open(options.cacheDir).frames(), written);
+        QCOMPARE(FrameCache::open(cacheDir).frames(), written);
     }
 
     void waterLeavingTheDomainStopsTheBake() {
