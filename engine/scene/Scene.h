@@ -33,7 +33,7 @@ struct SolverSettings {
     int maxIterations = 100;              //!< per solve
     double flowCflFactor = 0.4;           //!< λ in Δt = λ Δx / |v|max
     double xsphFactor = 0.3;              //!< XSPH viscosity between water particles
-    double wallXsphFactor = 0.05;         //!< XSPH toward the walls' velocity (friction)
+    double wallXsphFactor = 0.04;         //!< XSPH toward the walls' velocity (friction)
     double minTimeStep = 0.0001;          //!< s
     double maxTimeStep = 0.005;           //!< s
 

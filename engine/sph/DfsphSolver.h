@@ -49,7 +49,7 @@ public:
     const NeighborGrid& grid() const override { return grid_; }
     const PositionArrays& sortedPositions() const override { return sortedPositions_; }
     std::size_t allocatedBytes() const override;
-    //! p = κ ρ², κ from the last density solve.
+    //! pᵢ = ρᵢ² (q_div + q_dens) / Δt: the pressure both solves of the last step exerted.
     float pressure(const ParticleSet& fluid, std::size_t i) const override;
     PressureWarmStart warmStart() const override { return warmStart_; }
     void restoreWarmStart(const PressureWarmStart& warmStart) override { warmStart_ = warmStart; }
@@ -69,9 +69,13 @@ private:
     //! `densities` (kg/m³) are the step's, for the density solve.
     Outcome iterate(Solve solve, float dt, double tolerance, std::vector<float>& total,
                     const float* densities);
-    //! Each particle's compression and the stiffness increment that removes it (into
-    //! stiffness_); returns the average compression.
-    double residuals(Solve solve, float dt, const float* densities);
+    //! Each interior particle's compression rate and the stiffness increment that removes it
+    //! (into stiffness_); returns the average compression rate.
+    double divergenceResiduals();
+    //! Each particle's compression over the step and the change of its stiffness (into
+    //! stiffness_): the relaxed Jacobi iterate, accelerated by `chebyshevWeight` and kept at or
+    //! above zero. Returns the average error (compression, or expansion still pushed).
+    double densityResiduals(float dt, const float* densities, float chebyshevWeight);
     //! Dρᵢ/Dt of the current velocities over water and boundary particles.
     float densityRate(std::size_t i) const;
     //! vᵢ ← vᵢ − Σⱼ m(qᵢ + qⱼ)∇Wᵢⱼ − qᵢ Bᵢ for the stiffness q in `stiffness`, and total += q.
@@ -115,12 +119,14 @@ private:
     std::vector<float> stiffness_;              //!< this iteration's increment
     std::vector<float> divergenceTotal_;        //!< q of the divergence solve, summed
     std::vector<float> densityTotal_;           //!< q of the density solve, summed
+    std::vector<float> previousDensityTotal_;   //!< the iterate before, for Chebyshev's weights
     std::vector<std::int32_t> nearestBoundary_; //!< within the contact radius, −1 for none
     std::vector<std::uint8_t> nearestIsMoving_; //!< in the moving layer rather than the static
     ContactRecords contacts_;
     std::vector<Vec3d> reactions_;
     //! In the water's order at the end of the last step.
     PressureWarmStart warmStart_;
+    double lastTimeStep_ = 0.0; //!< 0 until a step is taken (also after a resume)
 };
 
 } // namespace airtrap
