@@ -8,10 +8,17 @@
 // pocket searches and rules): each side's own figures, and the overhead from the two stepped in
 // turn (BubbleStepComparison). Prints particle-updates per second, neighbours
 // per particle, ms per phase and bytes per particle, as a table or (--json) as one JSON array.
+//
+// --sim-seconds S (1 when given without a value) is the other mode: instead of fixed step counts,
+// it bakes S simulated seconds of samples/bench/peer_dam_break.json (SPlisHSPlasH's DamBreakModel,
+// 117,649 particles) with each pressure solver on each thread count: the wall seconds per
+// simulated second an artist waits, with steps, iterations per solve, ms per phase and bytes per
+// particle.
 #include "BenchmarkCase.h"
 #include "BubbleBakeComparison.h"
 #include "BubbleStepComparison.h"
 #include "DamBreakScene.h"
+#include "SimulatedSecondsCase.h"
 #include "scene/SceneJson.h"
 
 #include <CLI/CLI.hpp>
@@ -163,6 +170,72 @@ void printTableRow(const BenchmarkResult& r) {
     std::fflush(stdout);
 }
 
+void printSimulatedSecondsHeader() {
+    std::printf("%-16s %-6s %9s %3s %6s %6s %8s %8s %6s %6s %5s %7s %6s %8s %8s %8s %8s %8s\n",
+                "scene", "method", "particles", "thr", "sim s", "steps", "wall s", "s/sim-s",
+                "div it", "den it", "uncon", "B/part", "eng B", "ms/step", "neighb", "density",
+                "div_sol", "forces");
+}
+
+void printSimulatedSecondsRow(const SimulatedSecondsResult& r) {
+    const auto phase = [&](const char* name) {
+        const auto found = r.phaseMilliseconds.find(name);
+        return found == r.phaseMilliseconds.end() ? 0.0 : found->second;
+    };
+    const double msPerStep = r.steps ? 1000.0 * r.wallSeconds / double(r.steps) : 0.0;
+    std::printf(
+        "%-16s %-6s %9zu %3d %6.2f %6llu %8.1f %8.1f %6.2f %6.2f %5llu %7.0f %6.0f %8.2f %8.2f "
+        "%8.2f %8.2f %8.2f\n",
+        r.scene.c_str(), r.method.c_str(), r.particles, r.threads, r.simulatedSeconds,
+        static_cast<unsigned long long>(r.steps), r.wallSeconds, r.wallPerSimulatedSecond(),
+        r.divergenceIterationsPerStep, r.densityIterationsPerStep,
+        static_cast<unsigned long long>(r.unconvergedSteps), r.bytesPerParticle,
+        r.engineBytesPerParticle, msPerStep, phase("neighbours"), phase("density"),
+        phase("divergence_solve"), phase("forces"));
+    std::fflush(stdout);
+}
+
+nlohmann::json toJson(const SimulatedSecondsResult& r) {
+    return {{"scene", r.scene},
+            {"method", r.method},
+            {"particles", r.particles},
+            {"threads", r.threads},
+            {"simulated_seconds", r.simulatedSeconds},
+            {"wall_seconds", r.wallSeconds},
+            {"wall_seconds_per_simulated_second", r.wallPerSimulatedSecond()},
+            {"steps", r.steps},
+            {"divergence_iterations_per_step", r.divergenceIterationsPerStep},
+            {"density_iterations_per_step", r.densityIterationsPerStep},
+            {"unconverged_steps", r.unconvergedSteps},
+            {"bytes_per_particle", r.bytesPerParticle},
+            {"engine_bytes_per_particle", r.engineBytesPerParticle},
+            {"phase_ms", r.phaseMilliseconds}};
+}
+
+//! The --sim-seconds mode: `seconds` simulated of `scenePath` per method and thread count.
+void runSimulatedSeconds(const std::string& scenePath, double seconds,
+                         const std::vector<std::string>& methods, const std::vector<int>& threads,
+                         bool json) {
+    const Scene sample = readSceneFile(scenePath);
+    nlohmann::json all = nlohmann::json::array();
+    if (!json)
+        printSimulatedSecondsHeader();
+    for (const std::string& method : methods) {
+        Scene scene = sample;
+        scene.solver.method = method;
+        const SimulatedSecondsCase bake("peer_dam_break", scene);
+        for (int t : threads) {
+            const SimulatedSecondsResult result = bake.run(t, seconds);
+            if (json)
+                all.push_back(toJson(result));
+            else
+                printSimulatedSecondsRow(result);
+        }
+    }
+    if (json)
+        std::cout << all.dump(2) << "\n";
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -204,7 +277,34 @@ int main(int argc, char** argv) {
                    "Steps of each side when the per-step bubble cases are stepped in turn")
         ->check(CLI::PositiveNumber);
     app.add_flag("--json", json, "Print one JSON array instead of a table");
+    std::string simSecondsText;
+    CLI::Option* simSecondsOption =
+        app.add_option("--sim-seconds", simSecondsText,
+                       "Bake this many simulated seconds (1 if no value) of --sim-scene with "
+                       "each --methods, instead of the per-step cases")
+            ->expected(0, 1);
+    std::string simScenePath =
+        std::string(AIRTRAP_SOURCE_DIR) + "/samples/bench/peer_dam_break.json";
+    app.add_option("--sim-scene", simScenePath, "Scene of the --sim-seconds mode");
+    std::vector<std::string> methods = {"dfsph", "wcsph"};
+    app.add_option("--methods", methods, "Pressure solvers of the --sim-seconds mode")
+        ->delimiter(',')
+        ->check(CLI::IsMember({"wcsph", "dfsph"}));
     CLI11_PARSE(app, argc, argv);
+
+    if (simSecondsOption->count() > 0) {
+        try {
+            const double seconds = simSecondsText.empty() ? 1.0 : std::stod(simSecondsText);
+            if (!(seconds > 0.0))
+                throw std::invalid_argument("expected a positive number of seconds");
+            runSimulatedSeconds(simScenePath, seconds, methods, threads, json);
+        } catch (const std::exception& error) {
+            std::cerr << "airtrap-bench: --sim-seconds " << simSecondsText << ": " << error.what()
+                      << "\n";
+            return 1;
+        }
+        return 0;
+    }
 
     try {
         const Scene sample = readSceneFile(scenePath);
