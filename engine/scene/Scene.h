@@ -61,6 +61,13 @@ struct FluidBlock {
     Vec3d min = Vec3d(0.0, 0.0, 0.0);
     Vec3d max = Vec3d(0.5, 0.5, 0.5);
     Vec3d initialVelocity = Vec3d::Zero();
+
+    //! Particle layers that fill the block along `axis` at `spacing`: its extent in whole
+    //! spacings, rounded to the nearest, at least one. The validator warns when they do not make
+    //! up the extent exactly.
+    int layers(int axis, double spacing) const {
+        return std::max(1, static_cast<int>(std::lround((max - min)[axis] / spacing)));
+    }
 };
 
 //! A static box obstacle, axis-aligned in this version.

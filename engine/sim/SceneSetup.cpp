@@ -106,8 +106,12 @@ void SceneSetup::fillFluid(const Scene& scene, const std::vector<RigidBody>& bod
         const FluidBlock& b = scene.fluidBlocks[block];
         Vec3i count;
         for (int axis = 0; axis < 3; ++axis)
-            count[axis] = std::max(1, static_cast<int>(std::lround((b.max - b.min)[axis] / dx)));
+            count[axis] = b.layers(axis, dx);
         const Vec3f velocity = b.initialVelocity.cast<float>();
+        // The water's surface is the lattice's top, which differs from the block's drawn top
+        // when its height is not whole spacings (the validator says so): the hydrostatic start
+        // counts depth from where the water is.
+        const double surface = b.min.y() + count.y() * dx;
         for (int k = 0; k < count.z(); ++k)
             for (int j = 0; j < count.y(); ++j)
                 for (int i = 0; i < count.x(); ++i) {
@@ -115,7 +119,7 @@ void SceneSetup::fillFluid(const Scene& scene, const std::vector<RigidBody>& bod
                     if (!domain.contains(x) || insideAnyEarlierBlock(scene, block, x) ||
                         insideAnyObstacle(scene, x, 0.5 * dx) || insideABody(x, 0.25 * dx))
                         continue;
-                    const double depth = std::max(0.0, b.max.y() - x.y());
+                    const double depth = std::max(0.0, surface - x.y());
                     const float density = equationOfState.densityForPressure(
                         scene.solver.restDensity * gravity * depth);
                     fluid.push(x.cast<float>(), velocity, density, state.nextParticleId++);

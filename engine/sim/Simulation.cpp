@@ -323,7 +323,8 @@ void Simulation::noteFrame(int frame, std::size_t lost, double fastest,
     const std::string where = "frame " + std::to_string(frame) + ": ";
     if (lost > 0)
         notices_.push_back(where + std::to_string(lost) +
-                           " particles left the domain and were removed");
+                           (lost == 1 ? " particle left the domain and was removed"
+                                      : " particles left the domain and were removed"));
     if (solve.steps > 0) {
         std::ostringstream figures;
         figures.precision(3);

@@ -1,5 +1,5 @@
 // Cross-field validation: container corners, fluid blocks in the domain, obstacles in the
-// domain, the particle cap, and overlap warnings.
+// domain, the particle cap, and overlap and block-fit warnings.
 #include "sim/SceneCheck.h"
 #include "support/TestMain.h"
 #include "unit/SceneTestSupport.h"
@@ -109,6 +109,19 @@ private Q_SLOTS:
                  warnings[1].c_str());
         QVERIFY2(contains(warnings[2], "fluid_blocks[1] (\"Second\") overlaps obstacles[0]"),
                  warnings[2].c_str());
+    }
+
+    void saysHowDeepABlockIsFilledWhenNotWholeSpacings() {
+        Scene scene = validScene();
+        scene.solver.particleSpacing = 0.02;
+        scene.fluidBlocks[0].max.y() = 0.55; // 27.5 spacings: filled 28 layers deep
+        const std::vector<std::string> warnings = validateScene(scene);
+        QCOMPARE(warnings.size(), std::size_t(1));
+        QVERIFY2(contains(warnings[0],
+                          "tank.json: fluid_blocks[0] (\"Water\") is 0.55 m along y, not a whole "
+                          "number of solver.particle_spacing = 0.02 m: it is filled with 28 "
+                          "layers, 0.56 m of water (max.y = 0.56 would draw exactly that)"),
+                 warnings[0].c_str());
     }
 
     void touchingBoxesDoNotOverlap() {
