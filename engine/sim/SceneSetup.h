@@ -27,7 +27,8 @@ public:
     //! Fills every fluid block on the particle lattice, skipping points outside the container,
     //! inside obstacles or `bodies` (buildBodies' list; or closer than half a spacing to them) or
     //! already filled by an earlier block. Densities start hydrostatic (inverse Tait at the
-    //! depth below the block's top), so a resting pool starts at rest (DFSPH sums its own).
+    //! depth below the top of its particle layers), so a resting pool starts at rest (DFSPH sums
+    //! its own).
     static void fillFluid(const Scene& scene, const std::vector<RigidBody>& bodies,
                           SimulationState& state);
 };

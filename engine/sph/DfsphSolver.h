@@ -78,7 +78,8 @@ private:
     double densityResiduals(float dt, const float* densities, float chebyshevWeight);
     //! Dρᵢ/Dt of the current velocities over water and boundary particles.
     float densityRate(std::size_t i) const;
-    //! vᵢ ← vᵢ − Σⱼ m(qᵢ + qⱼ)∇Wᵢⱼ − qᵢ Bᵢ for the stiffness q in `stiffness`, and total += q.
+    //! vᵢ ← vᵢ − Σⱼ m(qᵢ + qⱼ)∇Wᵢⱼ − 2qᵢ Bᵢ (the mirrored wall) for the stiffness q in `stiffness`,
+    //! and total += q.
     void applyStiffness(const std::vector<float>& stiffness, std::vector<float>* total);
     //! v ← v + Δt g and XSPH smoothing toward the water's and the walls' velocities
     //! (solver.xsph, solver.wall_xsph); the velocities before it are kept in unsmoothed_.
