@@ -33,7 +33,7 @@ RigidBody BubbleBodyFactory::build(const BubbleState& bubble) const {
     // bubble bounces off a bouncy body and is stopped by any other.
     body.setMaterials(ContactMaterial{0.0, 0.0}, ContactMaterial{0.0, 0.0});
     const MassProperties mass = MassProperties::ofSphere(bubble.radius, density_);
-    body.makeDynamic(RigidBodyInertia(mass.mass, mass.inertia), Vec3d::Zero(), {});
+    body.makeDynamic(RigidBodyInertia(mass.mass, mass.inertia), mass.volume, Vec3d::Zero(), {});
     body.setState(bubble.body);
     return body;
 }

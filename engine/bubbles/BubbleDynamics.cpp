@@ -1,5 +1,7 @@
 #include "bubbles/BubbleDynamics.h"
 
+#include "core/PeriodicEvent.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -67,19 +69,20 @@ double BubbleDynamics::riseSpeed(double radius) const {
     return std::min(stokes, settings_.maxRiseSpeed);
 }
 
-bool BubbleDynamics::measureDue(std::uint64_t step, const std::vector<BubbleState>& bubbles) {
+bool BubbleDynamics::measureDue(double from, double to, const std::vector<BubbleState>& bubbles) {
     if (bubbles.empty())
         return false;
-    return step % kMeasureInterval == 0 ||
+    return periodDue(from, to, kMeasureInterval) ||
            std::any_of(bubbles.begin(), bubbles.end(),
                        [](const BubbleState& bubble) { return !bubble.surroundings.measured; });
 }
 
-void BubbleDynamics::measureSurroundings(std::uint64_t step, const std::vector<RigidBody>& bodies,
-                                         std::size_t first, std::vector<BubbleState>& bubbles,
+void BubbleDynamics::measureSurroundings(double from, double to,
+                                         const std::vector<RigidBody>& bodies, std::size_t first,
+                                         std::vector<BubbleState>& bubbles,
                                          const ParticleSet& fluid, const PositionArrays& positions,
                                          const NeighborGrid& grid) const {
-    const bool everyBubble = step % kMeasureInterval == 0;
+    const bool everyBubble = periodDue(from, to, kMeasureInterval);
     // Each bubble writes only its own entry: parallel, and the same bits on any thread count.
     tbb::parallel_for(std::size_t(0), bubbles.size(), [&](std::size_t k) {
         BubbleSurroundings& around = bubbles[k].surroundings;

@@ -39,19 +39,21 @@ public:
     void syncBodies(std::vector<RigidBody>& bodies, std::size_t first,
                     const std::vector<BubbleState>& bubbles);
 
-    //! Steps between two measures of a bubble's surroundings. The measure reads every water
-    //! particle within two support radii of the bubble, several hundred per bubble, and was the
-    //! largest part of the bubbles' cost when taken every step; what it measures changes slowly:
-    //! under the time-step limit (c = 10 u_max, CFL 0.4) the water moves less than a tenth of a
-    //! support radius in these steps, and an impact on a floating bubble lasts far longer.
-    static constexpr std::uint64_t kMeasureInterval = 5;
+    //! Simulated time (s) between two measures of a bubble's surroundings. The measure reads
+    //! every water particle within two support radii of the bubble, several hundred per bubble,
+    //! and was the largest part of the bubbles' cost when taken every step; what it measures
+    //! changes slowly: in a quarter of a millisecond the water moves less than a tenth of a
+    //! support radius at the speeds the samples reach, and an impact on a floating bubble lasts
+    //! far longer. That is about five steps of the samples' WCSPH (50–60 µs each), as the rule
+    //! counted before it counted time, and every step of DFSPH, whose steps are longer.
+    static constexpr double kMeasureInterval = 0.00025;
 
-    //! Whether the step numbered `step` (SimulationState::steps) has surroundings to measure:
-    //! every bubble's on every kMeasureInterval-th step, a new bubble's on its first.
-    static bool measureDue(std::uint64_t step, const std::vector<BubbleState>& bubbles);
-    //! Measures the water around the bubbles due at step `step` from the step's sorted water,
-    //! into their BubbleState::surroundings.
-    void measureSurroundings(std::uint64_t step, const std::vector<RigidBody>& bodies,
+    //! Whether the step [from, to) (s) has surroundings to measure: every bubble's when a
+    //! multiple of kMeasureInterval falls in it, a new bubble's at its first step.
+    static bool measureDue(double from, double to, const std::vector<BubbleState>& bubbles);
+    //! Measures the water around the bubbles due in the step [from, to) from the step's sorted
+    //! water, into their BubbleState::surroundings.
+    void measureSurroundings(double from, double to, const std::vector<RigidBody>& bodies,
                              std::size_t first, std::vector<BubbleState>& bubbles,
                              const ParticleSet& fluid, const PositionArrays& positions,
                              const NeighborGrid& grid) const;

@@ -1,6 +1,6 @@
 #pragma once
 // What the water around a bubble looked like when it was last measured, over the water
-// particles within two support radii of its surface. Measured every few steps
+// particles within two support radii of its surface. Measured every 0.25 ms of simulated time
 // (BubbleDynamics::kMeasureInterval) and kept in the cache with the bubble, so that a resumed
 // bake holds the same measure as one that ran on.
 #include "bubbles/BubbleImmersion.h"

@@ -21,10 +21,11 @@ const char* RigidBody::motionName(Motion motion) {
     return "";
 }
 
-void RigidBody::makeDynamic(const RigidBodyInertia& inertia, const Vec3d& centreOfMass,
-                            const RigidVelocity& velocity) {
+void RigidBody::makeDynamic(const RigidBodyInertia& inertia, double volume,
+                            const Vec3d& centreOfMass, const RigidVelocity& velocity) {
     motion_ = Motion::Dynamic;
     inertia_ = inertia;
+    volume_ = volume;
     const Vec3f shift = centreOfMass.cast<float>();
     for (Vec3f& x : boundary_.positions)
         x -= shift;

@@ -28,9 +28,10 @@ public:
     RigidBody(std::string name, BoundaryParticles boundary, BodyShape shape, const RigidPose& pose);
 
     //! Lets forces and contacts move the body. `inertia` is about the centre of mass, which
-    //! lies at `centreOfMass` in the shape frame; `velocity` is the centre of mass's velocity
-    //! and the angular velocity at t = 0.
-    void makeDynamic(const RigidBodyInertia& inertia, const Vec3d& centreOfMass,
+    //! lies at `centreOfMass` in the shape frame; `volume` (m³) is the solid's, which sets the
+    //! water it carries along (its added mass); `velocity` is the centre of mass's velocity and
+    //! the angular velocity at t = 0.
+    void makeDynamic(const RigidBodyInertia& inertia, double volume, const Vec3d& centreOfMass,
                      const RigidVelocity& velocity);
     //! Moves the body along `motion` (of its shape frame), whatever the water does.
     void makeKinematic(KinematicMotion motion);
@@ -51,6 +52,8 @@ public:
     const BoundaryParticles& boundary() const { return boundary_; }
     const BodyShape& shape() const { return shape_; }
     const RigidBodyInertia& inertia() const { return inertia_; }
+    //! m³ of solid a dynamic body displaces when immersed (0 for other bodies).
+    double volume() const { return volume_; }
     const ContactMaterial& waterMaterial() const { return waterMaterial_; }
     const ContactMaterial& bodyMaterial() const { return bodyMaterial_; }
     //! Where the body frame's origin lies in the shape frame (the centre of mass of a dynamic
@@ -101,6 +104,7 @@ private:
     BodyShape shape_;
     Vec3d shapeOffset_ = Vec3d::Zero();
     double surfaceOffset_ = 0.0;
+    double volume_ = 0.0;
     RigidBodyInertia inertia_ = RigidBodyInertia::infinite();
     ContactMaterial waterMaterial_;
     ContactMaterial bodyMaterial_;

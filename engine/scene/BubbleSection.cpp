@@ -52,12 +52,14 @@ std::vector<BoundParameter> creationParameters() {
                            &BubbleSettings::minWaterShare),
         bind<BubbleAccess>({.key = "pocket_interval",
                             .label = "Pocket search interval",
-                            .unit = "steps",
-                            .minimum = 1,
-                            .maximum = 10000,
-                            .help = "Steps between searches for air pockets. Without air "
-                                    "pressure a trapped pocket closes within a few hundredths "
-                                    "of a second, so it must be found soon after it forms."},
+                            .unit = "s",
+                            .minimum = 1e-4,
+                            .maximum = 0.05,
+                            .help = "Simulated time between searches for air pockets (a "
+                                    "search every step when the steps are longer). Without "
+                                    "air pressure a trapped pocket closes within a few "
+                                    "hundredths of a second, so it must be found soon after it "
+                                    "forms."},
                            &BubbleSettings::pocketInterval),
     };
 }

@@ -132,7 +132,7 @@ struct BubbleSettings {
     double minRadius = 1.0;             //!< particle spacings; smaller pockets make no bubble
     int maxNewPerFrame = 5;             //!< bubbles created per frame at most
     double minWaterShare = 0.5;         //!< share of a new bubble's 26 probes that must be wet
-    int pocketInterval = 10;            //!< steps between air-pocket searches
+    double pocketInterval = 0.0005;     //!< s of simulated time between air-pocket searches
     double kinematicViscosity = 1.0e-6; //!< m²/s, ν of water in the Stokes speed (eq. 5)
     double maxRiseSpeed = 0.25;         //!< m/s, cap of the Stokes speed
     double riseTime = 0.02;             //!< s, time constant of the steering toward it

@@ -101,7 +101,7 @@ RigidBody BodyBuilder::build(std::size_t index) const {
     rigid.setMaterials(material, material);
     if (body.motion == "dynamic") {
         const MassProperties mass = massOf(body, mesh ? &*mesh : nullptr);
-        rigid.makeDynamic(RigidBodyInertia(mass.mass, mass.inertia), mass.centreOfMass,
+        rigid.makeDynamic(RigidBodyInertia(mass.mass, mass.inertia), mass.volume, mass.centreOfMass,
                           {body.linearVelocity, body.angularVelocity});
     } else if (body.motion == "kinematic") {
         rigid.makeKinematic(kinematicMotionOf(body));

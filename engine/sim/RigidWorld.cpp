@@ -59,14 +59,15 @@ void RigidWorld::followPaths(SimulationState& state) {
     }
 }
 
-bool RigidWorld::bubbleSurroundingsDue(const SimulationState& state) const {
-    return bubbles_ && BubbleDynamics::measureDue(state.steps, state.bubbles);
+bool RigidWorld::bubbleSurroundingsDue(const SimulationState& state, double dt) const {
+    return bubbles_ && BubbleDynamics::measureDue(state.time, state.time + dt, state.bubbles);
 }
 
-void RigidWorld::measureBubbleSurroundings(SimulationState& state, const NeighborGrid& grid,
+void RigidWorld::measureBubbleSurroundings(SimulationState& state, double dt,
+                                           const NeighborGrid& grid,
                                            const PositionArrays& sortedPositions) const {
-    bubbles_->measureSurroundings(state.steps, bodies_, firstBubble_, state.bubbles, state.fluid,
-                                  sortedPositions, grid);
+    bubbles_->measureSurroundings(state.time, state.time + dt, bodies_, firstBubble_, state.bubbles,
+                                  state.fluid, sortedPositions, grid);
 }
 
 bool RigidWorld::move(SimulationState& state, const BoundaryModel& boundary,

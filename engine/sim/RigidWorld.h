@@ -41,10 +41,11 @@ public:
     //! Puts the kinematic bodies of `state` where their paths have them at state.time.
     void followPaths(SimulationState& state);
 
-    //! Whether the water around the bubbles is to be measured this step.
-    bool bubbleSurroundingsDue(const SimulationState& state) const;
+    //! Whether the water around the bubbles is to be measured in the step of `dt` s from
+    //! state.time.
+    bool bubbleSurroundingsDue(const SimulationState& state, double dt) const;
     //! Measures the water around the bubbles into the state, from the step's sorted water.
-    void measureBubbleSurroundings(SimulationState& state, const NeighborGrid& grid,
+    void measureBubbleSurroundings(SimulationState& state, double dt, const NeighborGrid& grid,
                                    const PositionArrays& sortedPositions) const;
 
     //! Moves the dynamic bodies over `dt` s under `reactions`, the water's force on each

@@ -1,6 +1,7 @@
 #include "sim/Simulation.h"
 
 #include "core/Error.h"
+#include "core/PeriodicEvent.h"
 #include "core/RunBeside.h"
 #include "scene/SceneSchema.h"
 #include "sim/SceneSetup.h"
@@ -203,9 +204,9 @@ StepReport Simulation::takeStep(double timeToFrameEnd, double frameEnd) {
             [&] { water.computeDensities(fluid, state_.steps, report.timeStep, report); });
     const auto forces = timed(phases_, StepPhases::Forces,
                               [&] { water.computeForces(fluid, report.timeStep, report); });
-    if (bodies_.bubbleSurroundingsDue(state_))
+    if (bodies_.bubbleSurroundingsDue(state_, report.timeStep))
         runBeside(forces, timed(phases_, StepPhases::BubbleForces, [&] {
-                      bodies_.measureBubbleSurroundings(state_, water.grid(),
+                      bodies_.measureBubbleSurroundings(state_, report.timeStep, water.grid(),
                                                         water.sortedPositions());
                   }));
     else
@@ -230,11 +231,12 @@ StepReport Simulation::takeStep(double timeToFrameEnd, double frameEnd) {
     if (bubbleDeletion_ && !state_.bubbles.empty())
         inPhase(phases_, StepPhases::BubbleDeletion, [&] { deleteBubbles(report.timeStep); });
 
-    // 5. Air pockets on this step's grid become bubbles, every bubbles.pocket_interval steps.
+    // 5. Air pockets on this step's grid become bubbles, every bubbles.pocket_interval of
+    //    simulated time (every step when the steps are longer).
     //    Table 1 reads them off the grid before the interactions; here they are read off the
     //    same grid after the move, so a new bubble first meets the water at the next step's
     //    placing, with its boundary particles, like every other body.
-    if (bubbleSpawner_ && state_.steps % scene_.bubbles.pocketInterval == 0)
+    if (bubbleSpawner_ && periodDue(stepStart, state_.time, scene_.bubbles.pocketInterval))
         createBubbles(state_.frame + 1);
     return report;
 }

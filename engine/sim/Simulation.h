@@ -78,7 +78,7 @@ private:
     void emitInflow(double from, double to);
     //! One step of at most `timeToFrameEnd` seconds, in the paper's Table 1 order: neighbours,
     //! particle interactions, rigid and bubble interactions and the move, then time, kinematic
-    //! paths and inflow, bubble deletion and, every bubbles.pocket_interval steps, creation.
+    //! paths and inflow, bubble deletion and, every bubbles.pocket_interval seconds, creation.
     //! `frameEnd` is the time the frame under way ends at (s).
     StepReport takeStep(double timeToFrameEnd, double frameEnd);
     //! The dynamic bodies' reactions and motion beside the water's integration; false when

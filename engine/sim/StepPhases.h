@@ -15,8 +15,8 @@ public:
     //! BubbleForces: measuring the water around each bubble for its drag, steering and deletion
     //! rules, beside Forces (applying them is a few operations per bubble, inside Bodies).
     //! BubblePockets: finding air pockets and creating bubbles, every bubbles.pocket_interval
-    //! steps. BubbleDeletion: the deletion rules, after every step. With DFSPH, Density covers
-    //! the densities by summation, the α factors and the density solve, DivergenceSolve the
+    //! of simulated time. BubbleDeletion: the deletion rules, after every step. With DFSPH, Density
+    //! covers the densities by summation, the α factors and the density solve, DivergenceSolve the
     //! divergence solve and the non-pressure forces, and Forces the contact impulses.
     enum Phase {
         Neighbours,

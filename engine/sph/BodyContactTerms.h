@@ -1,7 +1,8 @@
 #pragma once
 // What the contact impulse of eq. 4 needs to know about the body a water particle touches,
 // gathered once per step: its material, and for a dynamic body the terms of its inverse
-// effective mass K(n, r) = 1/M + n · ((I⁻¹ (r × n)) × r).
+// effective mass K(n, r) = 1/M + n · ((I⁻¹ (r × n)) × r); with its velocities and volume, what a
+// pressure solve that moves the body needs (BodySolveCoupling).
 #include "core/Math.h"
 
 namespace airtrap {
@@ -12,7 +13,10 @@ struct BodyContactTerms {
     bool dynamic = false; //!< whether the impulse moves the body too (K ≠ 0)
     Vec3d centre = Vec3d::Zero();
     double inverseMass = 0.0;
-    Mat3d inverseInertia = Mat3d::Zero(); //!< world frame
+    Mat3d inverseInertia = Mat3d::Zero();  //!< world frame
+    Vec3d linearVelocity = Vec3d::Zero();  //!< m/s, of `centre`, at the step's start
+    Vec3d angularVelocity = Vec3d::Zero(); //!< rad/s, world
+    double volume = 0.0;                   //!< m³ (dynamic bodies)
 
     //! K(n, r) at world point x along unit `normal`, 1/kg; 0 for a body that cannot move.
     double inverseEffectiveMass(const Vec3d& x, const Vec3d& normal) const {

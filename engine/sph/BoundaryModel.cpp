@@ -31,6 +31,9 @@ void BoundaryModel::gatherTerms(const std::vector<RigidBody>& bodies) {
         terms.centre = body.position();
         terms.inverseMass = body.inertia().inverseMass();
         terms.inverseInertia = body.inertia().inverseInertiaWorld(body.orientation());
+        terms.linearVelocity = body.linearVelocity();
+        terms.angularVelocity = body.angularVelocity();
+        terms.volume = body.volume();
         hasDynamicBodies_ = hasDynamicBodies_ || terms.dynamic;
     }
 }

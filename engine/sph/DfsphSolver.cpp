@@ -55,6 +55,15 @@ constexpr float kDensitySpectralRadius = 0.98f;
 //! a component beyond the assumed radius: the next iterate is a plain Jacobi one again.
 constexpr double kChebyshevRestartGrowth = 2.0;
 
+//! A dynamic body moves at most this share of a spacing per step. The density solve predicts the
+//! compression a step leaves to first order; a body closing on a wall squeezes the water between
+//! them far beyond that prediction when it moves a sizeable share of a spacing per step, and the
+//! next solve removes the excess at once, as a speed excess/Δt that throws the body back: the
+//! 10ρ cube of samples/buoyancy.json landed at 1.4 m/s and bounced up at 2–3 m/s under the
+//! flow's step alone (0.25 spacings per step), 0.28 m/s at 0.05 and landed on another face at 0.2
+//! (docs/VALIDATION.md "Bodies with DFSPH").
+constexpr double kBodyCflFactor = 0.05;
+
 //! Σ f(i) over [0, n), split and added in the same order on any number of threads.
 template <class F>
 double deterministicSum(std::size_t n, F&& f) {
@@ -103,7 +112,8 @@ DfsphSolver::DfsphSolver(const SolverSettings& settings, const Aabb& domain)
       // Water rests one spacing from the boundary layer; half of that is a real contact.
       contactRadius_(0.5f * spacing_), gridDomain_(domain.expanded(kernel_.supportRadius())),
       boundary_(gridDomain_, kernel_.supportRadius(), static_cast<float>(settings.restDensity)),
-      grid_(gridDomain_, kernel_.supportRadius()), contact_(mass_) {}
+      grid_(gridDomain_, kernel_.supportRadius()), contact_(mass_),
+      bodies_(kernel_, mass_, static_cast<float>(settings.restDensity), kWallPressureShare) {}
 
 void DfsphSolver::sortByCell(ParticleSet& fluid, StepReport& report) {
     airtrap::sortByCell(grid_, fluid, reorderScratch_, sortedPositions_, report);
@@ -157,6 +167,7 @@ void DfsphSolver::prepareDensities(ParticleSet& fluid, StepReport& report) {
     // Compression only: a splash particle's summed density is far below ρ₀ without any fault.
     report.maxDensityDeviation = parallelMax(
         n, [&](std::size_t i) { return std::max(0.0, fluid.densities[i] / restDensity - 1.0); });
+    bodies_.begin(boundary_, sortedPositions_, boundaryRate_);
 }
 
 void DfsphSolver::prepareParticle(ParticleSet& fluid, std::size_t i, std::uint32_t* found) {
@@ -303,6 +314,8 @@ DfsphSolver::Outcome DfsphSolver::iterate(Solve solve, float dt, double toleranc
                 total[i] = 0.0f;
     });
     applyStiffness(total, nullptr);
+    bodies_.startSolve();
+    moveBodies(solve, dt);
     if (solve == Solve::Density)
         previousDensityTotal_.assign(total.begin(), total.end());
     ChebyshevWeights chebyshev(kDensitySpectralRadius);
@@ -324,8 +337,19 @@ DfsphSolver::Outcome DfsphSolver::iterate(Solve solve, float dt, double toleranc
             chebyshev.restart();
         lowest = std::min(lowest, outcome.averageResidual);
         applyStiffness(stiffness_, &total);
+        moveBodies(solve, dt);
         ++outcome.iterations;
     }
+}
+
+void DfsphSolver::moveBodies(Solve solve, float dt) {
+    if (!bodies_.active())
+        return;
+    if (solve == Solve::Divergence)
+        bodies_.update(divergenceTotal_, nullptr, Vec3d::Zero(), boundaryRate_);
+    else
+        bodies_.update(densityTotal_, &divergenceTotal_, double(dt) * settings_.gravity,
+                       boundaryRate_);
 }
 
 void DfsphSolver::solveDivergence(double lastTimeStep, StepReport& report) {
@@ -390,10 +414,22 @@ Vec3f DfsphSolver::wallSmoothing(const Vec3f& vi, const BoundaryLayer& layer, st
     return (layer.psi()[b] * kernel_.value(std::sqrt(r2))) * (layer.velocities()[b] - vi);
 }
 
+double DfsphSolver::fastestBodySpeed() const {
+    const BoundaryLayer& layer = boundary_.movingLayer();
+    double fastest = 0.0;
+    for (std::size_t b = 0; b < layer.size(); ++b)
+        if (boundary_.contactTerms(layer.bodyOf()[b]).dynamic)
+            fastest = std::max(fastest, double(layer.velocities()[b].norm()));
+    return fastest;
+}
+
 void DfsphSolver::chooseTimeStep(double, double timeToFrameEnd, StepReport& report) const {
     double dt = settings_.maxTimeStep;
     if (report.maxSpeed > 0.0)
         dt = std::min(dt, settings_.flowCflFactor * settings_.particleSpacing / report.maxSpeed);
+    const double bodySpeed = fastestBodySpeed();
+    if (bodySpeed > 0.0)
+        dt = std::min(dt, kBodyCflFactor * settings_.particleSpacing / bodySpeed);
     report.stepAtMinimum = dt < settings_.minTimeStep;
     dt = std::max(dt, settings_.minTimeStep);
     report.timeStep = landOnFrame(dt, timeToFrameEnd);
@@ -512,7 +548,7 @@ std::size_t DfsphSolver::allocatedBytes() const {
            bytes(boundaryRate_) + bytes(stiffness_) + bytes(divergenceTotal_) +
            bytes(densityTotal_) + bytes(previousDensityTotal_) + bytes(nearestBoundary_) +
            bytes(nearestIsMoving_) + contacts_.allocatedBytes() + bytes(reactions_) +
-           bytes(warmStart_.divergence) + bytes(warmStart_.density);
+           bodies_.allocatedBytes() + bytes(warmStart_.divergence) + bytes(warmStart_.density);
 }
 
 } // namespace airtrap

@@ -8,6 +8,7 @@
 // in both; the pressure they exert goes to their body, and the contact impulse of the
 // impulse-based boundary force (eq. 4) stays for water approaching a body.
 #include "scene/Scene.h"
+#include "sph/BodySolveCoupling.h"
 #include "sph/BoundaryContact.h"
 #include "sph/NeighborList.h"
 #include "sph/NeighborSweep.h"
@@ -30,7 +31,8 @@ public:
     //! contact impulse; the warm start carried into this step's order.
     void prepareDensities(ParticleSet& fluid, StepReport& report) override;
     void solveDivergence(double lastTimeStep, StepReport& report) override;
-    //! Δt = λ Δx / |v|max within [min_time_step, max_time_step].
+    //! Δt = λ Δx / |v|max within [min_time_step, max_time_step], and short enough for the
+    //! dynamic bodies too (kBodyCflFactor).
     void chooseTimeStep(double lastMaxAcceleration, double timeToFrameEnd,
                         StepReport& report) const override;
     //! The density solve on the velocities the non-pressure forces predict for `dt`.
@@ -76,6 +78,11 @@ private:
     //! stiffness_): the relaxed Jacobi iterate, accelerated by `chebyshevWeight` and kept at or
     //! above zero. Returns the average error (compression, or expansion still pushed).
     double densityResiduals(float dt, const float* densities, float chebyshevWeight);
+    //! The largest speed (m/s) of a dynamic body's boundary particle at the step's start.
+    double fastestBodySpeed() const;
+    //! The dynamic bodies' velocities after the stiffness applied so far in `solve`
+    //! (BodySolveCoupling).
+    void moveBodies(Solve solve, float dt);
     //! Dρᵢ/Dt of the current velocities over water and boundary particles.
     float densityRate(std::size_t i) const;
     //! vᵢ ← vᵢ − Σⱼ m(qᵢ + qⱼ)∇Wᵢⱼ − 2qᵢ Bᵢ (the mirrored wall) for the stiffness q in `stiffness`,
@@ -124,6 +131,7 @@ private:
     std::vector<std::int32_t> nearestBoundary_; //!< within the contact radius, −1 for none
     std::vector<std::uint8_t> nearestIsMoving_; //!< in the moving layer rather than the static
     ContactRecords contacts_;
+    BodySolveCoupling bodies_;
     std::vector<Vec3d> reactions_;
     //! In the water's order at the end of the last step.
     PressureWarmStart warmStart_;

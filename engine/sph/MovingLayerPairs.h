@@ -37,6 +37,8 @@ public:
     }
     //! How many water particles have a partner in the layer.
     std::size_t waterCount() const { return marked_.size(); }
+    //! The sorted water particles that have a partner in the layer, in a fixed order.
+    std::span<const std::uint32_t> waterWithPartners() const { return marked_; }
     std::size_t pairCount() const { return water_.size(); }
     std::size_t allocatedBytes() const;
 

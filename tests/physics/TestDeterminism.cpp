@@ -41,11 +41,11 @@ Scene splash(const std::string& method = "wcsph") {
     return builder.body(paddle).build();
 }
 
-//! The splash with bubbles: two placed in the water at t = 0, and pockets searched every 3 steps.
+//! The splash with bubbles: two placed in the water at t = 0, and pockets searched every 0.5 ms.
 Scene splashWithBubbles(const std::string& method) {
     Scene scene = splash(method);
     scene.bubbles.enabled = true;
-    scene.bubbles.pocketInterval = 3;
+    scene.bubbles.pocketInterval = 0.0005;
     scene.bubbles.maxFloatingTime = 0.02;
     scene.bubbles.maxAge = 0.05; // so that deletions happen within the run
     return scene;

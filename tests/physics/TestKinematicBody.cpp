@@ -4,6 +4,7 @@
 #include "rigid/KeyframedPath.h"
 #include "sim/Simulation.h"
 #include "support/SceneBuilder.h"
+#include "support/SolverMethods.h"
 #include "support/TestMain.h"
 
 #include <QtTest>
@@ -15,7 +16,9 @@ class TestKinematicBody : public QObject {
     Q_OBJECT
 
 private Q_SLOTS:
+    void paddleFollowsItsKeyframes_data() { test::addSolverMethodRows(); }
     void paddleFollowsItsKeyframes() {
+        QFETCH(QString, method);
         RigidBodySettings paddle;
         paddle.name = "Paddle";
         paddle.motion = "kinematic";
@@ -29,6 +32,7 @@ private Q_SLOTS:
                           .water({0.0, 0.0, 0.0}, {0.8, 0.2, 0.3})
                           .body(paddle)
                           .build();
+        scene.solver.method = method.toStdString();
         // Sweeps right, turning 20° about z, then holds; the middle key falls between frames.
         scene.keyframes = {{"Paddle", 0.0, Vec3d(0.2, 0.2, 0.15), Vec3d::Zero()},
                            {"Paddle", 0.33, Vec3d(0.4, 0.2, 0.15), Vec3d(0.0, 0.0, -20.0)},

@@ -4,6 +4,7 @@
 // the impact the sphere's momentum loss and the water's gain agree within a few per cent.
 #include "sim/Simulation.h"
 #include "support/SceneBuilder.h"
+#include "support/SolverMethods.h"
 #include "support/TestMain.h"
 
 #include <QtTest>
@@ -26,13 +27,16 @@ class TestMomentumExchange : public QObject {
     Q_OBJECT
 
 private Q_SLOTS:
+    void sphereLosesWhatTheWaterGains_data() { test::addSolverMethodRows(); }
     void sphereLosesWhatTheWaterGains() {
+        QFETCH(QString, method);
         SceneBuilder builder;
         builder.spacing(0.02)
             .maxSpeed(4.0)
             .tank({1.4, 1.0, 1.0})
             .water({0.5, 0.3, 0.3}, {0.9, 0.7, 0.7});
         builder.scene().solver.gravity = Vec3d::Zero();
+        builder.scene().solver.method = method.toStdString();
         RigidBodySettings sphere;
         sphere.name = "Sphere";
         sphere.shape = "sphere";

@@ -26,7 +26,7 @@ RigidBody sphereBody(const Vec3d& centre, double radius, bool dynamic) {
                    BodyShape::sphere(radius), RigidPose{centre, Quatd::Identity()});
     if (dynamic) {
         const MassProperties mass = MassProperties::ofSphere(radius, 100.0);
-        body.makeDynamic(RigidBodyInertia(mass.mass, mass.inertia), Vec3d::Zero(), {});
+        body.makeDynamic(RigidBodyInertia(mass.mass, mass.inertia), mass.volume, Vec3d::Zero(), {});
     }
     return body;
 }
