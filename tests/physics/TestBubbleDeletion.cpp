@@ -13,6 +13,7 @@
 #include "BubbleTestSupport.h"
 #include "core/Interrupter.h"
 #include "support/SceneBuilder.h"
+#include "support/SolverMethods.h"
 #include "support/TestMain.h"
 
 #include <QtTest>
@@ -22,7 +23,7 @@ using airtrap::test::SceneBuilder;
 
 namespace {
 
-Scene stillTank(double depth) {
+Scene stillTank(double depth, const QString& method = "wcsph") {
     Scene scene = SceneBuilder()
                       .spacing(0.02)
                       .maxSpeed(3.0)
@@ -35,6 +36,7 @@ Scene stillTank(double depth) {
     scene.bubbles.maxFloatingTime = 1000.0;
     scene.bubbles.maxOverlap = 1.0;
     scene.bubbles.impactSpeed = 100.0;
+    scene.solver.method = method.toStdString();
     return scene;
 }
 
@@ -61,8 +63,10 @@ class TestBubbleDeletion : public QObject {
     Q_OBJECT
 
 private Q_SLOTS:
+    void ageRule_data() { test::addSolverMethodRows(); }
     void ageRule() {
-        Scene scene = stillTank(0.5);
+        QFETCH(QString, method);
+        Scene scene = stillTank(0.5, method);
         scene.bubbles.maxAge = 0.1;
         auto simulation =
             test::simulationWithBubbles(scene, {test::bubbleAt(0, Vec3d(0.2, 0.15, 0.2), 0.04)});
@@ -74,8 +78,10 @@ private Q_SLOTS:
         QCOMPARE(simulation->lastFrameStats().bubbles.deleted[BubbleTally::Age], std::uint64_t(1));
     }
 
+    void floatingRule_data() { test::addSolverMethodRows(); }
     void floatingRule() {
-        Scene scene = stillTank(0.3);
+        QFETCH(QString, method);
+        Scene scene = stillTank(0.3, method);
         scene.bubbles.densityRatio = 0.3;
         scene.bubbles.riseTime = 10.0;
         scene.bubbles.maxFloatingTime = 0.2;
@@ -96,8 +102,10 @@ private Q_SLOTS:
         QCOMPARE(simulation->state().bubblesDeleted.deletedTotal(), std::uint64_t(1));
     }
 
+    void overlapRule_data() { test::addSolverMethodRows(); }
     void overlapRule() {
-        Scene scene = stillTank(0.5);
+        QFETCH(QString, method);
+        Scene scene = stillTank(0.5, method);
         scene.bubbles.maxOverlap = 0.5;
         scene.bubbles.approachRestitution = -1.0;
         scene.bubbles.overlapRestitution = -1.0;
@@ -120,6 +128,8 @@ private Q_SLOTS:
         QCOMPARE(shallow->state().bubbles.size(), std::size_t(2));
     }
 
+    //! WCSPH only: with DFSPH the bubble leaves the water 0.14 s after it last has water around
+    //! half of it (docs/VALIDATION.md "Bodies with DFSPH").
     void surfacedRule() {
         Scene scene = stillTank(0.3);
         auto simulation =
@@ -147,8 +157,10 @@ private Q_SLOTS:
         QCOMPARE(inAir->state().bubblesDeleted.surfacedYoung, std::uint64_t(1));
     }
 
+    void impactRule_data() { test::addSolverMethodRows(); }
     void impactRule() {
-        Scene scene = stillTank(0.3);
+        QFETCH(QString, method);
+        Scene scene = stillTank(0.3, method);
         scene.bubbles.densityRatio = 0.3;
         scene.bubbles.riseTime = 10.0;
         scene.bubbles.impactSpeed = 1.5;

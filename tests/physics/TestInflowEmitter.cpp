@@ -7,6 +7,7 @@
 #include "sim/SceneCheck.h"
 #include "sim/Simulation.h"
 #include "support/SceneBuilder.h"
+#include "support/SolverMethods.h"
 #include "support/TestMain.h"
 
 #include <QTemporaryDir>
@@ -41,7 +42,7 @@ std::size_t emitInSteps(const InflowEmitter& emitter, double from, double to, do
 }
 
 //! A small tank with a shallow pool and a disc nozzle pouring straight down into it.
-Scene pouring() {
+Scene pouring(const std::string& method = "wcsph") {
     Scene scene = SceneBuilder()
                       .spacing(0.02)
                       .maxSpeed(4.0)
@@ -57,6 +58,7 @@ Scene pouring() {
     jet.stopTime = 1.0;
     jet.maxParticles = 10000;
     scene.emitters.push_back(jet);
+    scene.solver.method = method;
     return scene;
 }
 
@@ -199,8 +201,14 @@ private Q_SLOTS:
                  issues.errors[0].c_str());
     }
 
+    void poursIntoATankWithoutExploding_data() { test::addSolverMethodRows(); }
     void poursIntoATankWithoutExploding() {
-        const Scene scene = pouring();
+        QFETCH(QString, method);
+        const Scene scene = pouring(method.toStdString());
+        // WCSPH's densities come from the continuity equation and stay near ρ₀ everywhere; DFSPH
+        // sums them, and a jet's particles, with few neighbours, sum to far less without any
+        // fault: there only compression is an error, as the engine's own guard counts it.
+        const bool summed = scene.solver.method == "dfsph";
         const InflowEmitterSettings& jet = scene.emitters[0];
         const InflowEmitter emitter(jet, scene.solver.particleSpacing, scene.solver.restDensity);
         Simulation simulation(scene);
@@ -221,7 +229,8 @@ private Q_SLOTS:
             double maxError = 0.0;
             for (std::size_t i = 0; i < fluid.size(); ++i) {
                 QVERIFY(fluid.positions[i].allFinite() && fluid.velocities[i].allFinite());
-                maxError = std::max(maxError, std::abs(fluid.densities[i] / 1000.0 - 1.0));
+                const double deviation = fluid.densities[i] / 1000.0 - 1.0;
+                maxError = std::max(maxError, summed ? deviation : std::abs(deviation));
             }
             QVERIFY2(
                 maxError < scene.solver.maxDensityError,
@@ -239,8 +248,10 @@ private Q_SLOTS:
         QVERIFY2(reached, "the jet never reached the pool; the test proves nothing");
     }
 
+    void resumeIsBitIdentical_data() { test::addSolverMethodRows(); }
     void resumeIsBitIdentical() {
-        Scene scene = pouring();
+        QFETCH(QString, method);
+        Scene scene = pouring(method.toStdString());
         scene.frames.endFrame = 5;
         Simulation straight(scene);
         const SimulationState uninterrupted = bakeTo(straight, 5);
