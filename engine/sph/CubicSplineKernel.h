@@ -46,14 +46,16 @@ public:
     //! The same gradient from the squared distance, read from a table of dW/dr / r over r²
     //! with linear interpolation: no square root, division or branch in the neighbour loops.
     //! Relative error below 1e-4 for r > H/16 (particles never come closer than that).
-    Vec3f gradientFromSquared(const Vec3f& d, float r2) const {
+    Vec3f gradientFromSquared(const Vec3f& d, float r2) const { return gradientFactor(r2) * d; }
+
+    //! dW/dr / r at squared distance r2 from the same table: ∇ᵢW = factor · (xᵢ − xⱼ).
+    float gradientFactor(float r2) const {
         const float position = r2 * tableScale_;
         if (position >= float(kTableSize - 1))
-            return Vec3f::Zero();
+            return 0.0f;
         const int index = static_cast<int>(position);
         const float fraction = position - float(index);
-        const float factor = table_[index] + fraction * (table_[index + 1] - table_[index]);
-        return factor * d;
+        return table_[index] + fraction * (table_[index + 1] - table_[index]);
     }
 
 private:

@@ -143,6 +143,23 @@ void DfsphSolver::forEachWaterNeighbor(std::size_t i, Visit&& visit) const {
     }
 }
 
+template <class Visit>
+void DfsphSolver::forEachWaterGradient(std::size_t i, Visit&& visit) const {
+    if (neighbors_.overflowed(i)) {
+        forEachWaterNeighbor(i, [&](std::uint32_t j, const Vec3f& d, float r2) {
+            visit(j, kernel_.gradientFromSquared(d, r2));
+        });
+        return;
+    }
+    const Vec3f xi = sortedPositions_[i];
+    const std::uint32_t* list = neighbors_.neighbors(i);
+    const float* factors = &pairFactors_[i * NeighborList::kCapacity];
+    for (std::uint32_t k = 0, count = neighbors_.count(i); k < count; ++k) {
+        const std::uint32_t j = list[k];
+        visit(j, factors[k] * (xi - sortedPositions_[j]));
+    }
+}
+
 // ---- densities and factors -----------------------------------------------------------------
 
 void DfsphSolver::prepareDensities(ParticleSet& fluid, StepReport& report) {
@@ -158,6 +175,7 @@ void DfsphSolver::prepareDensities(ParticleSet& fluid, StepReport& report) {
     nearestBoundary_.resize(n);
     nearestIsMoving_.resize(n);
     carryWarmStart(n);
+    pairFactors_.resize(n * NeighborList::kCapacity);
     tbb::parallel_for(Range(0, n, kSolveGrain), [&](const Range& r) {
         std::uint32_t found[NeighborList::kCapacity + 1];
         for (std::size_t i = r.begin(); i != r.end(); ++i)
@@ -172,6 +190,7 @@ void DfsphSolver::prepareDensities(ParticleSet& fluid, StepReport& report) {
 
 void DfsphSolver::prepareParticle(ParticleSet& fluid, std::size_t i, std::uint32_t* found) {
     velocities_[i] = fluid.velocities[i];
+    float* factors = &pairFactors_[i * NeighborList::kCapacity];
     float weights = kernel_.value(0.0f);
     Vec3f gradientSum = Vec3f::Zero();
     float gradientSquares = 0.0f;
@@ -179,9 +198,12 @@ void DfsphSolver::prepareParticle(ParticleSet& fluid, std::size_t i, std::uint32
     sweepNeighbors(grid_, sortedPositions_, i, radius2_,
                    [&](std::uint32_t j, const Vec3f& d, float r2) {
                        weights += kernel_.value(std::sqrt(r2));
-                       const Vec3f grad = kernel_.gradientFromSquared(d, r2);
+                       const float factor = kernel_.gradientFactor(r2);
+                       const Vec3f grad = factor * d;
                        gradientSum += grad;
                        gradientSquares += grad.squaredNorm();
+                       if (count < NeighborList::kCapacity)
+                           factors[count] = factor;
                        found[std::min(count, NeighborList::kCapacity)] = j;
                        ++count;
                    });
@@ -241,8 +263,8 @@ void DfsphSolver::carryWarmStart(std::size_t n) {
 float DfsphSolver::densityRate(std::size_t i) const {
     const Vec3f vi = velocities_[i];
     float rate = 0.0f;
-    forEachWaterNeighbor(i, [&](std::uint32_t j, const Vec3f& d, float r2) {
-        rate += (vi - velocities_[j]).dot(kernel_.gradientFromSquared(d, r2));
+    forEachWaterGradient(i, [&](std::uint32_t j, const Vec3f& gradient) {
+        rate += (vi - velocities_[j]).dot(gradient);
     });
     return mass_ * rate + vi.dot(boundaryGradient_[i]) - boundaryRate_[i];
 }
@@ -293,8 +315,8 @@ void DfsphSolver::applyStiffness(const std::vector<float>& stiffness, std::vecto
             const float qi = stiffness[i];
             Vec3f change = (kWallPressureShare * qi) * boundaryGradient_[i];
             Vec3f pairs = Vec3f::Zero();
-            forEachWaterNeighbor(i, [&](std::uint32_t j, const Vec3f& d, float r2) {
-                pairs += (qi + stiffness[j]) * kernel_.gradientFromSquared(d, r2);
+            forEachWaterGradient(i, [&](std::uint32_t j, const Vec3f& gradient) {
+                pairs += (qi + stiffness[j]) * gradient;
             });
             change += mass_ * pairs;
             velocities_[i] -= change;
@@ -543,12 +565,13 @@ float DfsphSolver::pressure(const ParticleSet& fluid, std::size_t i) const {
 std::size_t DfsphSolver::allocatedBytes() const {
     const auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
     return grid_.allocatedBytes() + boundary_.allocatedBytes() + sortedPositions_.allocatedBytes() +
-           reorderScratch_.allocatedBytes() + neighbors_.allocatedBytes() + bytes(velocities_) +
-           bytes(unsmoothed_) + bytes(factors_) + bytes(interior_) + bytes(boundaryGradient_) +
-           bytes(boundaryRate_) + bytes(stiffness_) + bytes(divergenceTotal_) +
-           bytes(densityTotal_) + bytes(previousDensityTotal_) + bytes(nearestBoundary_) +
-           bytes(nearestIsMoving_) + contacts_.allocatedBytes() + bytes(reactions_) +
-           bodies_.allocatedBytes() + bytes(warmStart_.divergence) + bytes(warmStart_.density);
+           reorderScratch_.allocatedBytes() + neighbors_.allocatedBytes() + bytes(pairFactors_) +
+           bytes(velocities_) + bytes(unsmoothed_) + bytes(factors_) + bytes(interior_) +
+           bytes(boundaryGradient_) + bytes(boundaryRate_) + bytes(stiffness_) +
+           bytes(divergenceTotal_) + bytes(densityTotal_) + bytes(previousDensityTotal_) +
+           bytes(nearestBoundary_) + bytes(nearestIsMoving_) + contacts_.allocatedBytes() +
+           bytes(reactions_) + bodies_.allocatedBytes() + bytes(warmStart_.divergence) +
+           bytes(warmStart_.density);
 }
 
 } // namespace airtrap
