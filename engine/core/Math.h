@@ -7,10 +7,17 @@
 namespace airtrap {
 
 using Vec3f = Eigen::Vector3f;
+//! xyz and a zero: one aligned SIMD register (SSE, NEON) per vector in the solvers' inner loops.
+using Vec4f = Eigen::Vector4f;
 using Vec3d = Eigen::Vector3d;
 using Vec3i = Eigen::Vector3i;
 using Mat3d = Eigen::Matrix3d;
 using Quatd = Eigen::Quaterniond;
+
+//! v as xyz0.
+inline Vec4f padded(const Vec3f& v) {
+    return Vec4f(v.x(), v.y(), v.z(), 0.0f);
+}
 
 inline constexpr double kPi = 3.14159265358979323846;
 

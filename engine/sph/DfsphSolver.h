@@ -65,7 +65,7 @@ private:
     };
 
     //! Sweeps water particle i's neighbours once: density, α, boundary sums, nearest body.
-    void prepareParticle(ParticleSet& fluid, std::size_t i, std::uint32_t* found);
+    void prepareParticle(ParticleSet& fluid, std::size_t i, NeighborList::Sink& sink);
     //! Iterates `solve` until its average residual is at most `tolerance` (kg/m³, per second for
     //! the divergence), starting from the stiffness already in `total`.
     //! `densities` (kg/m³) are the step's, for the density solve.
@@ -78,6 +78,8 @@ private:
     //! stiffness_): the relaxed Jacobi iterate, accelerated by `chebyshevWeight` and kept at or
     //! above zero. Returns the average error (compression, or expansion still pushed).
     double densityResiduals(float dt, const float* densities, float chebyshevWeight);
+    //! The step the flow alone allows: λ Δx / |v|max within max_time_step.
+    double flowTimeStep(double maxSpeed) const;
     //! The largest speed (m/s) of a dynamic body's boundary particle at the step's start.
     double fastestBodySpeed() const;
     //! The dynamic bodies' velocities after the stiffness applied so far in `solve`
@@ -102,9 +104,10 @@ private:
                           float r2) const;
     template <class Visit>
     void forEachWaterNeighbor(std::size_t i, Visit&& visit) const;
-    //! visit(j, ∇ᵢWᵢⱼ) over water particle i's neighbours, from the factors stored with the list.
-    template <class Visit>
-    void forEachWaterGradient(std::size_t i, Visit&& visit) const;
+    //! Σⱼ term(j, ∇ᵢWᵢⱼ as xyz0) over water particle i's neighbours, from the factors stored
+    //! with the list.
+    template <class Term>
+    Vec4f sumOverWaterGradients(std::size_t i, Term&& term) const;
 
     SolverSettings settings_;
     CubicSplineKernel kernel_;
@@ -120,13 +123,14 @@ private:
     // Per particle, in the sorted order of the current step.
     PositionArrays sortedPositions_;
     ParticleSet reorderScratch_;
+    //! With each pair's dW/dr / r, so that the solves' passes need no kernel evaluation: they run
+    //! 2.1 times faster for 4 bytes per pair (docs/PERFORMANCE.md).
     NeighborList neighbors_;
-    //! dW/dr / r of each listed pair (NeighborList::kCapacity per particle), so that the solves'
-    //! passes need no kernel evaluation: they run 2.4 times faster for 160 bytes per particle
-    //! (docs/PERFORMANCE.md).
-    std::vector<float> pairFactors_;
-    std::vector<Vec3f> velocities_; //!< solved in place, written back by integrate()
-    std::vector<Vec3f> unsmoothed_; //!< before the non-pressure forces
+    //! The positions again as xyz0, so that the solves' passes load each neighbour's in one
+    //! aligned read and work on all three components at once (docs/PERFORMANCE.md).
+    std::vector<Vec4f> packedPositions_;
+    std::vector<Vec4f> velocities_; //!< xyz0, solved in place, written back by integrate()
+    std::vector<Vec4f> unsmoothed_; //!< xyz0, before the non-pressure forces
     std::vector<float> factors_; //!< αᵢ = 1 / (|Σⱼ m∇Wᵢⱼ + Bᵢ|² + Σⱼ |m∇Wᵢⱼ|²)
     std::vector<std::uint8_t> interior_;        //!< enough neighbours for the divergence solve
     std::vector<Vec3f> boundaryGradient_;       //!< Bᵢ = Σ_b Ψ_b ∇W_ib

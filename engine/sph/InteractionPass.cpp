@@ -24,23 +24,16 @@ InteractionPass::InteractionPass(const CubicSplineKernel& kernel,
 
 void InteractionPass::densityRates(const InteractionInputs& in, std::vector<float>& rates,
                                    NeighborList& neighbors) const {
-    neighbors.resize(in.fluid.size());
-    tbb::parallel_for(Range(0, in.fluid.size(), kGrain), [&](const Range& r) {
-        std::uint32_t found[NeighborList::kCapacity + 1];
-        for (std::size_t i = r.begin(); i != r.end(); ++i) {
-            const Vec3f vi = in.fluid.velocities[i];
-            float rate = 0.0f;
-            std::uint32_t count = 0;
-            sweepNeighbors(in.grid, in.positions, i, radius2_,
-                           [&](std::uint32_t j, const Vec3f& d, float r2) {
-                               const Vec3f grad = kernel_.gradientFromSquared(d, r2);
-                               rate += (vi - in.fluid.velocities[j]).dot(grad);
-                               found[std::min(count, NeighborList::kCapacity)] = j;
-                               ++count;
-                           });
-            neighbors.store(i, found, count);
-            rates[i] = constants_.mass * rate + boundaryDensityRate(i, in);
-        }
+    neighbors.build(in.fluid.size(), [&](std::size_t i, NeighborList::Sink& sink) {
+        const Vec3f vi = in.fluid.velocities[i];
+        float rate = 0.0f;
+        sweepNeighbors(in.grid, in.positions, i, radius2_,
+                       [&](std::uint32_t j, const Vec3f& d, float r2) {
+                           const Vec3f grad = kernel_.gradientFromSquared(d, r2);
+                           rate += (vi - in.fluid.velocities[j]).dot(grad);
+                           sink.add(j);
+                       });
+        rates[i] = constants_.mass * rate + boundaryDensityRate(i, in);
     });
 }
 
@@ -106,10 +99,6 @@ Vec3f InteractionPass::waterForce(std::size_t i, const InteractionInputs& in,
         }
         force -= (pi + pressureTerms[j] + viscosity) * grad;
     };
-    if (neighbors.overflowed(i)) {
-        sweepNeighbors(in.grid, in.positions, i, radius2_, addPair);
-        return force;
-    }
     const std::uint32_t* list = neighbors.neighbors(i);
     for (std::uint32_t k = 0, n = neighbors.count(i); k < n; ++k) {
         const std::uint32_t j = list[k];

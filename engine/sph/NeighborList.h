@@ -1,46 +1,98 @@
 #pragma once
-// The water neighbours of every particle for one step, found once by the density pass and read
-// again by the force pass, so the 27-cell sweep runs once per step. Fixed capacity per particle:
-// about 26 neighbours sit within a support of 2Δx on the initial lattice, so 40 leaves room for
-// compression; a particle with more is marked and the force pass sweeps its cells again.
+// The water neighbours of every particle for one step, found once by the pass that sweeps the
+// grid and read again by the passes after it, so the 27-cell sweep runs once per step.
+//
+// The lists are packed without gaps, block by block of kBlockSize particles: the memory is what
+// the neighbours need (about 30 per particle in water at rest, 26 on the initial lattice) rather
+// than a fixed capacity sized for the most compressed particle, and nothing overflows. One task
+// fills a block in particle order, so the lists are the same on any number of threads. Each pair
+// may keep one float beside its index (DFSPH keeps its kernel factor there).
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 #include <vector>
 
 namespace airtrap {
 
 class NeighborList {
 public:
-    static constexpr std::uint32_t kCapacity = 40;
-    static constexpr std::uint8_t kOverflow = 0xff;
+    static constexpr std::size_t kBlockSize = 512;
 
-    void resize(std::size_t particles) {
-        indices_.resize(particles * kCapacity);
-        counts_.resize(particles);
-    }
-
-    //! Stores the neighbours `found[0, count)` of particle i, or marks it as overflowing.
-    void store(std::size_t i, const std::uint32_t* found, std::uint32_t count) {
-        if (count > kCapacity) {
-            counts_[i] = kOverflow;
-            return;
+    //! Where the search of one particle puts its neighbours, in the order it finds them.
+    class Sink {
+    public:
+        void add(std::uint32_t j) { indices_.push_back(j); }
+        void add(std::uint32_t j, float value) {
+            indices_.push_back(j);
+            values_.push_back(value);
         }
-        std::uint32_t* out = &indices_[i * kCapacity];
-        for (std::uint32_t k = 0; k < count; ++k)
-            out[k] = found[k];
-        counts_[i] = static_cast<std::uint8_t>(count);
+
+    private:
+        friend class NeighborList;
+        std::vector<std::uint32_t> indices_;
+        std::vector<float> values_;
+    };
+
+    //! Lists particles [0, particles): find(i, sink) hands each of particle i's neighbours to the
+    //! sink, with or without a value (the same for every pair). Blocks run in parallel.
+    template <class Find>
+    void build(std::size_t particles, Find&& find) {
+        const std::size_t blockCount = (particles + kBlockSize - 1) / kBlockSize;
+        blocks_.resize(blockCount);
+        ends_.resize(particles);
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, blockCount, 1),
+                          [&](const tbb::blocked_range<std::size_t>& r) {
+                              Sink sink;
+                              for (std::size_t b = r.begin(); b != r.end(); ++b)
+                                  fillBlock(b, std::min(particles, (b + 1) * kBlockSize), sink,
+                                            find);
+                          });
     }
 
-    bool overflowed(std::size_t i) const { return counts_[i] == kOverflow; }
-    std::uint32_t count(std::size_t i) const { return counts_[i]; }
-    const std::uint32_t* neighbors(std::size_t i) const { return &indices_[i * kCapacity]; }
+    std::uint32_t count(std::size_t i) const { return ends_[i] - begin(i); }
+    const std::uint32_t* neighbors(std::size_t i) const {
+        return blocks_[i / kBlockSize].indices.data() + begin(i);
+    }
+    //! The values kept with particle i's pairs, in the order of neighbors(i).
+    const float* values(std::size_t i) const {
+        return blocks_[i / kBlockSize].values.data() + begin(i);
+    }
 
     std::size_t allocatedBytes() const {
-        return indices_.capacity() * sizeof(std::uint32_t) + counts_.capacity();
+        std::size_t bytes = ends_.capacity() * sizeof(std::uint32_t);
+        for (const Block& block : blocks_)
+            bytes += block.indices.capacity() * sizeof(std::uint32_t) +
+                     block.values.capacity() * sizeof(float);
+        return bytes;
     }
 
 private:
-    std::vector<std::uint32_t> indices_;
-    std::vector<std::uint8_t> counts_;
+    struct Block {
+        std::vector<std::uint32_t> indices;
+        std::vector<float> values;
+    };
+
+    std::uint32_t begin(std::size_t i) const { return i % kBlockSize == 0 ? 0 : ends_[i - 1]; }
+
+    template <class Find>
+    void fillBlock(std::size_t b, std::size_t end, Sink& sink, Find& find) {
+        sink.indices_.clear();
+        sink.values_.clear();
+        for (std::size_t i = b * kBlockSize; i != end; ++i) {
+            find(i, sink);
+            ends_[i] = static_cast<std::uint32_t>(sink.indices_.size());
+        }
+        // Copied at their exact size: a block grown pair by pair would keep up to twice the
+        // memory its lists need.
+        Block& block = blocks_[b];
+        block.indices.assign(sink.indices_.begin(), sink.indices_.end());
+        block.values.assign(sink.values_.begin(), sink.values_.end());
+    }
+
+    std::vector<Block> blocks_;
+    std::vector<std::uint32_t> ends_; //!< end of each particle's list within its block
 };
 
 } // namespace airtrap
