@@ -2,6 +2,9 @@
 
 #include "rigid/RigidIntegrator.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace airtrap {
 namespace {
 
@@ -40,6 +43,16 @@ void RigidCoupling::advance(std::vector<RigidBody>& bodies, const BoundaryModel&
                             const std::vector<Vec3d>& reactions, double dt,
                             const ExtraForces& extraForces) {
     sumReactions(bodies, boundary, reactions);
+    // The water's force stays what the step's solve found; the contacts between bodies are
+    // resolved at no more than kMaxContactStep each.
+    const int substeps = std::max(1, static_cast<int>(std::ceil(dt / kMaxContactStep - 1e-9)));
+    const double substep = dt / substeps;
+    for (int k = 0; k < substeps; ++k)
+        advanceSubstep(bodies, substep, extraForces);
+}
+
+void RigidCoupling::advanceSubstep(std::vector<RigidBody>& bodies, double dt,
+                                   const ExtraForces& extraForces) {
     std::vector<Vec3d> turnRates(bodies.size(), Vec3d::Zero());
     std::vector<Vec3d> spinBeforeContacts(bodies.size(), Vec3d::Zero());
     for (std::size_t k = 0; k < bodies.size(); ++k) {

@@ -4,6 +4,7 @@
 // corner because a scene needs some.
 #include "sim/Simulation.h"
 #include "support/SceneBuilder.h"
+#include "support/SolverMethods.h"
 #include "support/TestMain.h"
 
 #include <QtTest>
@@ -15,7 +16,9 @@ class TestBoxStack : public QObject {
     Q_OBJECT
 
 private Q_SLOTS:
+    void threeBoxesComeToRest_data() { test::addSolverMethodRows(); }
     void threeBoxesComeToRest() {
+        QFETCH(QString, method);
         SceneBuilder builder;
         builder.spacing(0.02)
             .maxSpeed(2.0)
@@ -32,7 +35,8 @@ private Q_SLOTS:
             box.position = Vec3d(0.35, (k + 0.5) * kEdge + 0.01 * (k + 1), 0.35);
             builder.body(box);
         }
-        const Scene scene = builder.build();
+        Scene scene = builder.build();
+        scene.solver.method = method.toStdString();
 
         Simulation simulation(scene);
         Interrupter interrupter;
