@@ -33,6 +33,7 @@ void BodySolveCoupling::begin(const BoundaryModel& boundary, const PositionArray
     motionOf_.clear();
     nearWater_.clear();
     otherRate_.clear();
+    holdsSinkingBody_ = false;
     const BoundaryLayer& layer = boundary.movingLayer();
     if (!boundary.hasDynamicBodies() || layer.size() == 0)
         return;
@@ -51,6 +52,7 @@ void BodySolveCoupling::begin(const BoundaryModel& boundary, const PositionArray
         motion.inverseInertia = terms.inverseInertia;
         const double addedMass = kAddedMassShare * restDensity_ * terms.volume;
         motion.initialRelaxation = motion.mass / (motion.mass + addedMass);
+        holdsSinkingBody_ = holdsSinkingBody_ || motion.mass >= restDensity_ * terms.volume;
         motionOf_[body] = static_cast<std::int32_t>(bodies_.size());
         bodies_.push_back(motion);
     }

@@ -38,6 +38,9 @@ public:
     void begin(const BoundaryModel& boundary, const PositionArrays& water,
                const std::vector<float>& boundaryRate);
     bool active() const { return !bodies_.empty(); }
+    //! Whether a dynamic body at least as dense as the water is among them: one that can sink
+    //! onto the floor or another body and close a film of water against it.
+    bool holdsSinkingBody() const { return holdsSinkingBody_; }
     //! The water particles with a dynamic body's boundary particle within reach.
     const std::vector<std::uint32_t>& nearWater() const { return nearWater_; }
     //! Forgets the relaxation's history: a new solve's iterates start.
@@ -92,6 +95,7 @@ private:
     std::vector<std::uint32_t> nearWater_; //!< water particles with a dynamic partner
     std::vector<float> otherRate_;         //!< their rate from everything but those partners
     std::vector<Vec3f> impulses_;          //!< per moving-layer particle, N·s
+    bool holdsSinkingBody_ = false;
 };
 
 } // namespace airtrap

@@ -331,12 +331,13 @@ DfsphSolver::Outcome DfsphSolver::iterate(Solve solve, float dt, double toleranc
     if (solve == Solve::Density)
         previousDensityTotal_.assign(total.begin(), total.end());
     ChebyshevWeights chebyshev(kDensitySpectralRadius);
-    // With dynamic bodies inside the solve its iteration is no longer the water's alone, and
-    // weights made for the water's spectral radius overshoot the bodies' response: the 10ρ cube
-    // of samples/buoyancy.json landed at 1.2 m/s and bounced up at 1.9–2.8 m/s, turning over;
-    // with plain Jacobi iterates it bounced at 0.19 m/s and settled flat (docs/VALIDATION.md
-    // "Bodies with DFSPH").
-    const bool accelerate = !bodies_.active();
+    // With a body that sinks inside the solve its iteration is no longer the water's alone, and
+    // weights made for the water's spectral radius overshoot the body's response to the film it
+    // closes against the floor: the 10ρ cube of samples/buoyancy.json landed at 1.2 m/s and
+    // bounced up at 1.9–2.8 m/s, turning over; with plain Jacobi iterates it bounced at
+    // 0.19 m/s and settled flat (docs/VALIDATION.md "Bodies with DFSPH"). Light bodies (the
+    // bubbles, a floating cylinder) keep the acceleration: they rise away from walls.
+    const bool accelerate = !bodies_.holdsSinkingBody();
     double lowest = std::numeric_limits<double>::infinity();
     Outcome outcome;
     for (;;) {
