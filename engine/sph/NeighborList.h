@@ -36,7 +36,8 @@ public:
     };
 
     //! Lists particles [0, particles): find(i, sink) hands each of particle i's neighbours to the
-    //! sink, with or without a value (the same for every pair). Blocks run in parallel.
+    //! sink, every pair with a value or none without (values() is only for the former). Blocks
+    //! run in parallel.
     template <class Find>
     void build(std::size_t particles, Find&& find) {
         const std::size_t blockCount = (particles + kBlockSize - 1) / kBlockSize;

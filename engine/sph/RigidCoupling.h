@@ -20,7 +20,7 @@ public:
     //! 0.022 rad at DFSPH's 5 ms steps, 0.0045 at 1 ms, 0.0012 at 0.5 ms (docs/VALIDATION.md
     //! "Bodies with DFSPH"). Longer steps are split for the bodies, as rigid-body engines
     //! sub-step their contacts (Macklin et al., "Small Steps in Physics Simulation", SCA 2019).
-    //! WCSPH's steps are shorter than this and are not split.
+    //! No WCSPH sample's step is split: their cache frames kept the same bits.
     static constexpr double kMaxContactStep = 1.0e-3;
 
     //! `spacing` (m) of the particles sets the contact solver's tolerances.
