@@ -13,18 +13,19 @@ void BoundaryLayer::rebuild(const std::vector<RigidBody>& bodies,
     std::size_t total = 0;
     for (std::uint32_t index : members)
         total += bodies[index].boundary().size();
-    unsortedPositions_.resize(total);
-    unsortedNormals_.resize(total);
-    unsortedVelocities_.resize(total);
-    unsortedPsi_.resize(total);
-    unsortedBodyOf_.resize(total);
+    Unsorted unsorted;
+    unsorted.positions.resize(total);
+    unsorted.normals.resize(total);
+    unsorted.velocities.resize(total);
+    unsorted.psi.resize(total);
+    unsorted.bodyOf.resize(total);
     std::size_t first = 0;
     for (std::uint32_t index : members) {
-        placeBody(bodies[index], index, first);
+        placeBody(bodies[index], index, first, unsorted);
         first += bodies[index].boundary().size();
     }
-    grid_.reshape(window());
-    grid_.build(unsortedPositions_);
+    grid_.reshape(window(unsorted.positions));
+    grid_.build(unsorted.positions);
     const auto& order = grid_.order();
     const std::size_t n = order.size();
     positions_.resize(n);
@@ -34,19 +35,20 @@ void BoundaryLayer::rebuild(const std::vector<RigidBody>& bodies,
     bodyOf_.resize(n);
     for (std::size_t s = 0; s < n; ++s) {
         const std::uint32_t from = order[s];
-        positions_[s] = unsortedPositions_[from];
-        normals_[s] = unsortedNormals_[from];
-        velocities_[s] = unsortedVelocities_[from];
-        psi_[s] = unsortedPsi_[from];
-        bodyOf_[s] = unsortedBodyOf_[from];
+        positions_[s] = unsorted.positions[from];
+        normals_[s] = unsorted.normals[from];
+        velocities_[s] = unsorted.velocities[from];
+        psi_[s] = unsorted.psi[from];
+        bodyOf_[s] = unsorted.bodyOf[from];
     }
+    grid_.releaseSortMemory();
     markReach();
 }
 
-Aabb BoundaryLayer::window() const {
+Aabb BoundaryLayer::window(const std::vector<Vec3f>& positions) const {
     Aabb bounds{Vec3d::Constant(std::numeric_limits<double>::max()),
                 Vec3d::Constant(std::numeric_limits<double>::lowest())};
-    for (const Vec3f& x : unsortedPositions_) {
+    for (const Vec3f& x : positions) {
         if (!x.allFinite()) // a blown-up body: build() drops the point, the guard reports it
             continue;
         bounds.min = bounds.min.cwiseMin(x.cast<double>());
@@ -84,15 +86,16 @@ void BoundaryLayer::markReach() {
     }
 }
 
-void BoundaryLayer::placeBody(const RigidBody& body, std::uint32_t index, std::size_t first) {
+void BoundaryLayer::placeBody(const RigidBody& body, std::uint32_t index, std::size_t first,
+                              Unsorted& unsorted) const {
     const BoundaryParticles& local = body.boundary();
     for (std::size_t b = 0; b < local.size(); ++b) {
         const Vec3f x = body.toWorld(local.positions[b]);
-        unsortedPositions_[first + b] = x;
-        unsortedNormals_[first + b] = body.directionToWorld(local.normals[b]);
-        unsortedVelocities_[first + b] = body.velocityAt(x);
-        unsortedPsi_[first + b] = restDensity_ * local.volumes[b];
-        unsortedBodyOf_[first + b] = index;
+        unsorted.positions[first + b] = x;
+        unsorted.normals[first + b] = body.directionToWorld(local.normals[b]);
+        unsorted.velocities[first + b] = body.velocityAt(x);
+        unsorted.psi[first + b] = restDensity_ * local.volumes[b];
+        unsorted.bodyOf[first + b] = index;
     }
 }
 
@@ -100,12 +103,7 @@ std::size_t BoundaryLayer::allocatedBytes() const {
     return grid_.allocatedBytes() +
            (positions_.capacity() + normals_.capacity() + velocities_.capacity()) * sizeof(Vec3f) +
            psi_.capacity() * sizeof(float) + bodyOf_.capacity() * sizeof(std::uint32_t) +
-           nearCells_.capacity() +
-           (unsortedPositions_.capacity() + unsortedNormals_.capacity() +
-            unsortedVelocities_.capacity()) *
-               sizeof(Vec3f) +
-           unsortedPsi_.capacity() * sizeof(float) +
-           unsortedBodyOf_.capacity() * sizeof(std::uint32_t);
+           nearCells_.capacity();
 }
 
 } // namespace airtrap

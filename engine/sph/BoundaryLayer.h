@@ -41,11 +41,22 @@ public:
     std::size_t allocatedBytes() const;
 
 private:
-    //! Writes the world-space data of `body`'s particles into the unsorted arrays from `first`.
-    void placeBody(const RigidBody& body, std::uint32_t index, std::size_t first);
+    //! The layer's particles in the bodies' order, before sorting: held only while rebuilding
+    //! (the tank's walls alone are about as many particles as the water, 44 bytes each).
+    struct Unsorted {
+        std::vector<Vec3f> positions;
+        std::vector<Vec3f> normals;
+        std::vector<Vec3f> velocities;
+        std::vector<float> psi;
+        std::vector<std::uint32_t> bodyOf;
+    };
+
+    //! Writes the world-space data of `body`'s particles into `unsorted` from `first`.
+    void placeBody(const RigidBody& body, std::uint32_t index, std::size_t first,
+                   Unsorted& unsorted) const;
     //! The cells of the water's lattice from one cell below the particles to one above, within
     //! the lattice's domain: every point within a cell of a particle lies inside.
-    Aabb window() const;
+    Aabb window(const std::vector<Vec3f>& positions) const;
     //! Marks the cells whose 27-cell neighbourhood holds a particle.
     void markReach();
 
@@ -59,12 +70,6 @@ private:
     std::vector<float> psi_;
     std::vector<std::uint32_t> bodyOf_;
     std::vector<std::uint8_t> nearCells_; //!< per cell: a particle within one cell
-    // The same in the bodies' order, before sorting.
-    std::vector<Vec3f> unsortedPositions_;
-    std::vector<Vec3f> unsortedNormals_;
-    std::vector<Vec3f> unsortedVelocities_;
-    std::vector<float> unsortedPsi_;
-    std::vector<std::uint32_t> unsortedBodyOf_;
 };
 
 } // namespace airtrap

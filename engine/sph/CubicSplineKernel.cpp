@@ -18,6 +18,8 @@ CubicSplineKernel::CubicSplineKernel(float supportRadius)
                                      : gradient(Vec3f(float(r), 0, 0), float(r)).x() / r;
         table_[k] = k == kTableSize - 1 ? 0.0f : static_cast<float>(factor);
     }
+    codeStep_ = table_[0] / 65535.0f;
+    inverseCodeStep_ = 1.0f / codeStep_;
 }
 
 } // namespace airtrap

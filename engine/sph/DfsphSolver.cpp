@@ -8,6 +8,11 @@
 
 #include <algorithm>
 #include <atomic>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#elif defined(__ARM_NEON)
+#include <arm_neon.h>
+#endif
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -139,6 +144,23 @@ void DfsphSolver::forEachWaterNeighbor(std::size_t i, Visit&& visit) const {
     }
 }
 
+namespace {
+using CodeFloats = float __attribute__((vector_size(16)));
+
+//! codes[0..3] as floats: widened and converted in two vector instructions (SSE2 or NEON),
+//! which compilers do not find by themselves for 16-bit lanes.
+CodeFloats fourFactorCodes(const NeighborList::Value* codes) {
+#if defined(__SSE2__)
+    const __m128i quad = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(codes));
+    return _mm_cvtepi32_ps(_mm_unpacklo_epi16(quad, _mm_setzero_si128()));
+#elif defined(__ARM_NEON)
+    return vcvtq_f32_u32(vmovl_u16(vld1_u16(codes)));
+#else
+    return CodeFloats{float(codes[0]), float(codes[1]), float(codes[2]), float(codes[3])};
+#endif
+}
+} // namespace
+
 template <class Term>
 Vec4f DfsphSolver::sumOverWaterGradients(std::size_t i, Term&& term) const {
     // Local pointers and a local sum: with a sum written through a reference at every pair, the
@@ -147,13 +169,21 @@ Vec4f DfsphSolver::sumOverWaterGradients(std::size_t i, Term&& term) const {
     const Vec4f* positions = packedPositions_.data();
     const Vec4f xi = positions[i];
     const std::uint32_t* list = neighbors_.neighbors(i);
-    const float* factors = neighbors_.values(i);
+    const NeighborList::Value* codes = neighbors_.values(i);
+    const std::uint32_t count = neighbors_.count(i);
     Vec4f sum = Vec4f::Zero();
-    for (std::uint32_t k = 0, count = neighbors_.count(i); k < count; ++k) {
-        const std::uint32_t j = list[k];
-        sum += term(j, Vec4f(factors[k] * (xi - positions[j])));
+    std::uint32_t k = 0;
+    // Four codes converted at once: one by one, the conversion doubled the floating-point work
+    // that is not the pair's own and the passes ran 15–20 % slower than with stored floats.
+    for (; k + 4 <= count; k += 4) {
+        const CodeFloats factors = fourFactorCodes(codes + k);
+        for (std::uint32_t t = 0; t < 4; ++t)
+            sum += term(list[k + t], Vec4f(factors[t] * (xi - positions[list[k + t]])));
     }
-    return sum;
+    for (; k < count; ++k)
+        sum += term(list[k], Vec4f(float(codes[k]) * (xi - positions[list[k]])));
+    // The terms are linear in the gradient, so the codes' step scales the sum once.
+    return kernel_.gradientFactorStep() * sum;
 }
 
 // ---- densities and factors -----------------------------------------------------------------
@@ -190,11 +220,12 @@ void DfsphSolver::prepareParticle(ParticleSet& fluid, std::size_t i, NeighborLis
     sweepNeighbors(grid_, sortedPositions_, i, radius2_,
                    [&](std::uint32_t j, const Vec3f& d, float r2) {
                        weights += kernel_.value(std::sqrt(r2));
-                       const float factor = kernel_.gradientFactor(r2);
-                       const Vec3f grad = factor * d;
+                       // α from the factor the solves' passes will read back.
+                       const NeighborList::Value code = kernel_.gradientFactorCode(r2);
+                       const Vec3f grad = (kernel_.gradientFactorStep() * float(code)) * d;
                        gradientSum += grad;
                        gradientSquares += grad.squaredNorm();
-                       sink.add(j, factor);
+                       sink.add(j, code);
                        ++count;
                    });
 

@@ -104,8 +104,8 @@ private:
                           float r2) const;
     template <class Visit>
     void forEachWaterNeighbor(std::size_t i, Visit&& visit) const;
-    //! Σⱼ term(j, ∇ᵢWᵢⱼ as xyz0) over water particle i's neighbours, from the factors stored
-    //! with the list.
+    //! Σⱼ term(j, ∇ᵢWᵢⱼ as xyz0) over water particle i's neighbours, from the factors' codes
+    //! stored with the list. `term` must be linear in the gradient.
     template <class Term>
     Vec4f sumOverWaterGradients(std::size_t i, Term&& term) const;
 
@@ -123,8 +123,8 @@ private:
     // Per particle, in the sorted order of the current step.
     PositionArrays sortedPositions_;
     ParticleSet reorderScratch_;
-    //! With each pair's dW/dr / r, so that the solves' passes need no kernel evaluation: they run
-    //! 2.1 times faster for 4 bytes per pair (docs/PERFORMANCE.md).
+    //! With each pair's dW/dr / r as a 16-bit code, so that the solves' passes need no kernel
+    //! evaluation: they run 2.1 times faster for 2 bytes per pair (docs/PERFORMANCE.md).
     NeighborList neighbors_;
     //! The positions again as xyz0, so that the solves' passes load each neighbour's in one
     //! aligned read and work on all three components at once (docs/PERFORMANCE.md).

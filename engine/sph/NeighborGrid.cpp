@@ -74,6 +74,11 @@ void NeighborGrid::build(const std::vector<Vec3f>& positions) {
     cellStart_[0] = 0;
 }
 
+void NeighborGrid::releaseSortMemory() {
+    std::vector<std::uint32_t>().swap(cellOfPoint_);
+    std::vector<std::uint32_t>().swap(order_);
+}
+
 std::size_t NeighborGrid::allocatedBytes() const {
     return (cellStart_.capacity() + cellOfPoint_.capacity() + order_.capacity()) *
            sizeof(std::uint32_t);

@@ -35,6 +35,9 @@ public:
 
     const std::vector<std::uint32_t>& order() const { return order_; }
     std::size_t sortedCount() const { return order_.size(); }
+    //! Frees what only the sort needs (order() becomes empty; the cells stay): for a grid whose
+    //! points were copied in sorted order and that is not built again for a while.
+    void releaseSortMemory();
     std::size_t outsideCount() const { return outside_; }
 
     //! Calls visit(begin, end) for the contiguous ranges of sorted indices that cover the cells

@@ -6,7 +6,8 @@
 // the neighbours need (about 30 per particle in water at rest, 26 on the initial lattice) rather
 // than a fixed capacity sized for the most compressed particle, and nothing overflows. One task
 // fills a block in particle order, so the lists are the same on any number of threads. Each pair
-// may keep one float beside its index (DFSPH keeps its kernel factor there).
+// may keep a 16-bit value beside its index (DFSPH keeps its kernel factor's code there: 6 bytes
+// a pair rather than 8, the lists being most of the solver's memory).
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
@@ -19,12 +20,13 @@ namespace airtrap {
 class NeighborList {
 public:
     static constexpr std::size_t kBlockSize = 512;
+    using Value = std::uint16_t;
 
     //! Where the search of one particle puts its neighbours, in the order it finds them.
     class Sink {
     public:
         void add(std::uint32_t j) { indices_.push_back(j); }
-        void add(std::uint32_t j, float value) {
+        void add(std::uint32_t j, Value value) {
             indices_.push_back(j);
             values_.push_back(value);
         }
@@ -32,7 +34,7 @@ public:
     private:
         friend class NeighborList;
         std::vector<std::uint32_t> indices_;
-        std::vector<float> values_;
+        std::vector<Value> values_;
     };
 
     //! Lists particles [0, particles): find(i, sink) hands each of particle i's neighbours to the
@@ -57,7 +59,7 @@ public:
         return blocks_[i / kBlockSize].indices.data() + begin(i);
     }
     //! The values kept with particle i's pairs, in the order of neighbors(i).
-    const float* values(std::size_t i) const {
+    const Value* values(std::size_t i) const {
         return blocks_[i / kBlockSize].values.data() + begin(i);
     }
 
@@ -65,15 +67,25 @@ public:
         std::size_t bytes = ends_.capacity() * sizeof(std::uint32_t);
         for (const Block& block : blocks_)
             bytes += block.indices.capacity() * sizeof(std::uint32_t) +
-                     block.values.capacity() * sizeof(float);
+                     block.values.capacity() * sizeof(Value);
         return bytes;
     }
 
 private:
     struct Block {
         std::vector<std::uint32_t> indices;
-        std::vector<float> values;
+        std::vector<Value> values;
     };
+    //! A block keeps its memory while its lists fit, unless they use less than this share of it
+    //! (a splash's block, once dense, would hold its peak for the rest of the bake).
+    static constexpr std::size_t kShrinkBelowPercent = 75;
+
+    template <class T>
+    static void assignFitting(std::vector<T>& to, const std::vector<T>& from) {
+        if (from.size() * 100 < to.capacity() * kShrinkBelowPercent)
+            std::vector<T>().swap(to);
+        to.assign(from.begin(), from.end());
+    }
 
     std::uint32_t begin(std::size_t i) const { return i % kBlockSize == 0 ? 0 : ends_[i - 1]; }
 
@@ -88,8 +100,8 @@ private:
         // Copied at their exact size: a block grown pair by pair would keep up to twice the
         // memory its lists need.
         Block& block = blocks_[b];
-        block.indices.assign(sink.indices_.begin(), sink.indices_.end());
-        block.values.assign(sink.values_.begin(), sink.values_.end());
+        assignFitting(block.indices, sink.indices_);
+        assignFitting(block.values, sink.values_);
     }
 
     std::vector<Block> blocks_;

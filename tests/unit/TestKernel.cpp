@@ -5,6 +5,7 @@
 
 #include <QtTest>
 #include <cmath>
+#include <cstdint>
 
 using namespace airtrap;
 
@@ -81,6 +82,20 @@ private Q_SLOTS:
             QVERIFY((kernel.gradientFromSquared(-d, r * r) + table).norm() == 0.0f);
         }
         QCOMPARE(kernel.gradientFromSquared(Vec3f(0.101f, 0, 0), 0.0102f), Vec3f::Zero());
+    }
+
+    void gradientFactorCodesStayWithinHalfAStep() {
+        const CubicSplineKernel kernel(0.1f);
+        const float largest = std::abs(kernel.gradientFactor(0.0f));
+        QCOMPARE(kernel.gradientFactorCode(0.0f), std::uint16_t(65535));
+        QCOMPARE(kernel.gradientFactorCode(0.0101f), std::uint16_t(0));
+        for (float r = 0.0f; r < 0.1f; r += 0.0007f) {
+            const float exact = kernel.gradientFactor(r * r);
+            const float decoded =
+                kernel.gradientFactorStep() * float(kernel.gradientFactorCode(r * r));
+            QVERIFY2(std::abs(decoded - exact) <= 8e-6f * largest,
+                     qPrintable(QString("r=%1: %2 vs %3").arg(r).arg(decoded).arg(exact)));
+        }
     }
 };
 
