@@ -154,7 +154,9 @@ CodeFloats fourFactorCodes(const NeighborList::Value* codes) {
     const __m128i quad = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(codes));
     return _mm_cvtepi32_ps(_mm_unpacklo_epi16(quad, _mm_setzero_si128()));
 #elif defined(__ARM_NEON)
-    return vcvtq_f32_u32(vmovl_u16(vld1_u16(codes)));
+    CodeFloats factors;
+    vst1q_f32(reinterpret_cast<float*>(&factors), vcvtq_f32_u32(vmovl_u16(vld1_u16(codes))));
+    return factors;
 #else
     return CodeFloats{float(codes[0]), float(codes[1]), float(codes[2]), float(codes[3])};
 #endif
