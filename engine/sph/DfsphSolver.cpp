@@ -121,7 +121,10 @@ DfsphSolver::DfsphSolver(const SolverSettings& settings, const Aabb& domain)
       bodies_(kernel_, mass_, static_cast<float>(settings.restDensity), kWallPressureShare) {}
 
 void DfsphSolver::sortByCell(ParticleSet& fluid, StepReport& report) {
-    airtrap::sortByCell(grid_, fluid, reorderScratch_, sortedPositions_, report);
+    // The boundary gradients and the stiffness increments are rewritten before this step reads
+    // them.
+    airtrap::sortByCell(grid_, fluid, SortSpares{boundaryGradient_, stiffness_, sortIds_},
+                        sortedPositions_, report);
 }
 
 void DfsphSolver::placeBoundary(const std::vector<RigidBody>& bodies) {
@@ -199,7 +202,6 @@ void DfsphSolver::prepareDensities(ParticleSet& fluid, StepReport& report) {
     interior_.resize(n);
     boundaryGradient_.resize(n);
     boundaryRate_.resize(n);
-    stiffness_.resize(n);
     nearestBoundary_.resize(n);
     nearestIsMoving_.resize(n);
     carryWarmStart(n);
@@ -264,20 +266,23 @@ void DfsphSolver::prepareParticle(ParticleSet& fluid, std::size_t i, NeighborLis
 
 void DfsphSolver::carryWarmStart(std::size_t n) {
     const auto& order = grid_.order();
-    const auto carry = [&](const std::vector<float>& previous, std::vector<float>& current,
-                           float share) {
-        current.resize(n);
+    // Each total holds the last step's values in the last step's order; stiffness_ is free
+    // until the solves.
+    const auto carry = [&](std::vector<float>& total, float share) {
+        stiffness_.resize(n);
         tbb::parallel_for(Range(0, n, kSolveGrain), [&](const Range& r) {
             for (std::size_t s = r.begin(); s != r.end(); ++s) {
                 // Particles emitted since the last step have none.
                 const std::uint32_t from = order[s];
-                current[s] = from < previous.size() ? share * previous[from] : 0.0f;
+                stiffness_[s] = from < total.size() ? share * total[from] : 0.0f;
             }
         });
+        std::swap(total, stiffness_);
     };
-    carry(warmStart_.divergence, divergenceTotal_, kDivergenceWarmShare);
+    carry(divergenceTotal_, kDivergenceWarmShare);
     // Held as κ until the step is known: computeDensities() turns it into q = κ Δt.
-    carry(warmStart_.density, densityTotal_, kDensityWarmShare);
+    carry(densityTotal_, kDensityWarmShare);
+    stiffness_.resize(n);
 }
 
 // ---- the solves ----------------------------------------------------------------------------
@@ -576,15 +581,13 @@ bool DfsphSolver::integrate(ParticleSet& fluid, double dt) {
     const float inverseStep = 1.0f / step;
     const std::size_t n = fluid.size();
     lastTimeStep_ = dt;
-    warmStart_.divergence.resize(n);
-    warmStart_.density.resize(n);
     std::atomic<bool> nonFinite{false};
     tbb::parallel_for(Range(0, n, kSolveGrain), [&](const Range& r) {
         for (std::size_t i = r.begin(); i != r.end(); ++i) {
             fluid.velocities[i] = velocities_[i].head<3>();
             fluid.positions[i] += step * fluid.velocities[i];
-            warmStart_.divergence[i] = divergenceTotal_[i];
-            warmStart_.density[i] = densityTotal_[i] * inverseStep;
+            // The totals stay as the next step's warm start, the density solve's as κ = q / Δt.
+            densityTotal_[i] *= inverseStep;
             if (!fluid.positions[i].allFinite() || !fluid.velocities[i].allFinite())
                 nonFinite.store(true, std::memory_order_relaxed);
         }
@@ -592,26 +595,34 @@ bool DfsphSolver::integrate(ParticleSet& fluid, double dt) {
     return nonFinite.load();
 }
 
+PressureWarmStart DfsphSolver::warmStart() const {
+    return PressureWarmStart{divergenceTotal_, densityTotal_};
+}
+
+void DfsphSolver::restoreWarmStart(const PressureWarmStart& warmStart) {
+    divergenceTotal_ = warmStart.divergence;
+    densityTotal_ = warmStart.density;
+}
+
 float DfsphSolver::pressure(const ParticleSet& fluid, std::size_t i) const {
-    if (i >= warmStart_.density.size())
+    if (i >= densityTotal_.size() || i >= divergenceTotal_.size())
         return 0.0f;
     const float rho = fluid.densities[i];
-    float kappa = warmStart_.density[i];
+    float kappa = densityTotal_[i];
     if (lastTimeStep_ > 0.0)
-        kappa += warmStart_.divergence[i] / static_cast<float>(lastTimeStep_);
+        kappa += divergenceTotal_[i] / static_cast<float>(lastTimeStep_);
     return kappa * rho * rho;
 }
 
 std::size_t DfsphSolver::allocatedBytes() const {
     const auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
     return grid_.allocatedBytes() + boundary_.allocatedBytes() + sortedPositions_.allocatedBytes() +
-           reorderScratch_.allocatedBytes() + neighbors_.allocatedBytes() +
-           bytes(packedPositions_) + bytes(velocities_) + bytes(unsmoothed_) + bytes(factors_) +
-           bytes(interior_) + bytes(boundaryGradient_) + bytes(boundaryRate_) + bytes(stiffness_) +
+           bytes(sortIds_) + neighbors_.allocatedBytes() + bytes(packedPositions_) +
+           bytes(velocities_) + bytes(unsmoothed_) + bytes(factors_) + bytes(interior_) +
+           bytes(boundaryGradient_) + bytes(boundaryRate_) + bytes(stiffness_) +
            bytes(divergenceTotal_) + bytes(densityTotal_) + bytes(previousDensityTotal_) +
            bytes(nearestBoundary_) + bytes(nearestIsMoving_) + contacts_.allocatedBytes() +
-           bytes(reactions_) + bodies_.allocatedBytes() + bytes(warmStart_.divergence) +
-           bytes(warmStart_.density);
+           bytes(reactions_) + bodies_.allocatedBytes();
 }
 
 } // namespace airtrap

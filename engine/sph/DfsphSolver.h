@@ -53,8 +53,9 @@ public:
     std::size_t allocatedBytes() const override;
     //! pᵢ = ρᵢ² (q_div + q_dens) / Δt: the pressure both solves of the last step exerted.
     float pressure(const ParticleSet& fluid, std::size_t i) const override;
-    PressureWarmStart warmStart() const override { return warmStart_; }
-    void restoreWarmStart(const PressureWarmStart& warmStart) override { warmStart_ = warmStart; }
+    //! The totals of both solves' stiffness at the end of the last step (κ for the density).
+    PressureWarmStart warmStart() const override;
+    void restoreWarmStart(const PressureWarmStart& warmStart) override;
 
 private:
     enum class Solve { Divergence, Density };
@@ -122,7 +123,7 @@ private:
 
     // Per particle, in the sorted order of the current step.
     PositionArrays sortedPositions_;
-    ParticleSet reorderScratch_;
+    std::vector<std::uint32_t> sortIds_; //!< the ids' spare for sortByCell()
     //! With each pair's dW/dr / r as a 16-bit code, so that the solves' passes need no kernel
     //! evaluation: they run 2.1 times faster for 2 bytes per pair (docs/PERFORMANCE.md).
     NeighborList neighbors_;
@@ -132,20 +133,21 @@ private:
     std::vector<Vec4f> velocities_; //!< xyz0, solved in place, written back by integrate()
     std::vector<Vec4f> unsmoothed_; //!< xyz0, before the non-pressure forces
     std::vector<float> factors_; //!< αᵢ = 1 / (|Σⱼ m∇Wᵢⱼ + Bᵢ|² + Σⱼ |m∇Wᵢⱼ|²)
-    std::vector<std::uint8_t> interior_;        //!< enough neighbours for the divergence solve
-    std::vector<Vec3f> boundaryGradient_;       //!< Bᵢ = Σ_b Ψ_b ∇W_ib
-    std::vector<float> boundaryRate_;           //!< Σ_b Ψ_b v_b·∇W_ib
-    std::vector<float> stiffness_;              //!< this iteration's increment
-    std::vector<float> divergenceTotal_;        //!< q of the divergence solve, summed
-    std::vector<float> densityTotal_;           //!< q of the density solve, summed
+    std::vector<std::uint8_t> interior_;  //!< enough neighbours for the divergence solve
+    std::vector<Vec3f> boundaryGradient_; //!< Bᵢ = Σ_b Ψ_b ∇W_ib
+    std::vector<float> boundaryRate_;     //!< Σ_b Ψ_b v_b·∇W_ib
+    std::vector<float> stiffness_;        //!< this iteration's increment
+    //! q of the divergence solve, summed; between steps the next one's warm start, in the
+    //! water's order at the end of the last step.
+    std::vector<float> divergenceTotal_;
+    //! q of the density solve, summed; between steps κ = q / Δt, the next one's warm start.
+    std::vector<float> densityTotal_;
     std::vector<float> previousDensityTotal_;   //!< the iterate before, for Chebyshev's weights
     std::vector<std::int32_t> nearestBoundary_; //!< within the contact radius, −1 for none
     std::vector<std::uint8_t> nearestIsMoving_; //!< in the moving layer rather than the static
     ContactRecords contacts_;
     BodySolveCoupling bodies_;
     std::vector<Vec3d> reactions_;
-    //! In the water's order at the end of the last step.
-    PressureWarmStart warmStart_;
     double lastTimeStep_ = 0.0; //!< 0 until a step is taken (also after a resume)
 };
 

@@ -84,7 +84,9 @@ void WcsphSolver::placeBoundary(const std::vector<RigidBody>& bodies) {
 }
 
 void WcsphSolver::sortByCell(ParticleSet& fluid, StepReport& report) {
-    airtrap::sortByCell(grid_, fluid, reorderScratch_, sortedPositions_, report);
+    // The accelerations and the density rates are rewritten before this step reads them.
+    airtrap::sortByCell(grid_, fluid, SortSpares{accelerations_, densityRates_, sortIds_},
+                        sortedPositions_, report);
 }
 
 double WcsphSolver::advanceDensities(ParticleSet& fluid, double dt) {
@@ -158,7 +160,7 @@ std::size_t WcsphSolver::allocatedBytes() const {
     return grid_.allocatedBytes() + boundary_.allocatedBytes() + sortedPositions_.allocatedBytes() +
            neighbors_.allocatedBytes() + pressureOverDensity2_.capacity() * sizeof(float) +
            densityRates_.capacity() * sizeof(float) + accelerations_.capacity() * sizeof(Vec3f) +
-           reorderScratch_.allocatedBytes() + contacts_.allocatedBytes() +
+           sortIds_.capacity() * sizeof(std::uint32_t) + contacts_.allocatedBytes() +
            reactions_.capacity() * sizeof(Vec3d);
 }
 

@@ -9,6 +9,7 @@
 #include "sph/PressureSolver.h"
 #include "sph/TaitEquationOfState.h"
 
+#include <cstdint>
 #include <vector>
 
 namespace airtrap {
@@ -79,9 +80,9 @@ private:
     std::vector<float> pressureOverDensity2_; //!< p/ρ², the pressure term of eq. 1
     std::vector<float> densityRates_;         //!< dρ/dt (eq. 2)
     std::vector<Vec3f> accelerations_;        //!< dv/dt (eq. 1 + contact impulses)
-    ParticleSet reorderScratch_;
-    ContactRecords contacts_;      //!< impulses from dynamic bodies, for their reaction
-    std::vector<Vec3d> reactions_; //!< N, the water's force on each boundary particle
+    std::vector<std::uint32_t> sortIds_;      //!< the ids' spare for sortByCell()
+    ContactRecords contacts_;                 //!< impulses from dynamic bodies, for their reaction
+    std::vector<Vec3d> reactions_;            //!< N, the water's force on each boundary particle
 };
 
 } // namespace airtrap

@@ -1,7 +1,8 @@
 // A static box obstacle in the path of a collapsing column: the water flows around and over it
-// and never enters it, and none is lost.
+// and never enters it, and none is lost; with either pressure solver.
 #include "sim/Simulation.h"
 #include "support/SceneBuilder.h"
+#include "support/SolverMethods.h"
 #include "support/TestMain.h"
 
 #include <QtTest>
@@ -13,7 +14,9 @@ class TestObstacle : public QObject {
     Q_OBJECT
 
 private Q_SLOTS:
+    void waterStaysOutOfTheObstacle_data() { test::addSolverMethodRows(); }
     void waterStaysOutOfTheObstacle() {
+        QFETCH(QString, method);
         Scene scene = SceneBuilder()
                           .spacing(0.02)
                           .maxSpeed(4.0)
@@ -26,6 +29,7 @@ private Q_SLOTS:
         box.center = Vec3d(0.6, 0.075, 0.1);
         box.size = Vec3d(0.1, 0.15, 0.2);
         scene.obstacles.push_back(box);
+        scene.solver.method = method.toStdString();
 
         Simulation simulation(scene);
         const std::size_t count = simulation.state().fluid.size();
