@@ -16,6 +16,7 @@ nlohmann::ordered_json frameJson(const BubbleCensusFrame& row) {
             {"floating", row.floating},
             {"airborne", row.airborne},
             {"mean_rise_speed_in_water", row.meanRiseSpeedInWater},
+            {"mean_slip_speed_in_water", row.meanSlipSpeedInWater},
             {"mean_target_rise_speed", row.meanTargetRiseSpeed},
             {"created", row.created},
             {"deleted", row.deleted},
@@ -68,6 +69,7 @@ nlohmann::ordered_json BubbleCensusReport::toJson() const {
         {"floating_share", t.floatingShare()},
         {"airborne_share", t.airborneShare()},
         {"mean_rise_speed_in_water", t.meanRiseSpeedInWater},
+        {"mean_slip_speed_in_water", t.meanSlipSpeedInWater},
         {"mean_target_rise_speed", t.meanTargetRiseSpeed},
         {"mean_depth_at_creation", t.meanDepthAtCreation},
         {"first_seen",
@@ -86,12 +88,13 @@ nlohmann::ordered_json BubbleCensusReport::toJson() const {
 }
 
 void BubbleCensusReport::printText(std::ostream& out) const {
-    out << "frame  alive  water  float  air   rise m/s  target m/s  made  gone\n";
+    out << "frame  alive  water  float  air   rise m/s  slip m/s  target m/s  made  gone\n";
     for (const BubbleCensusFrame& row : census_.frames()) {
         char line[128];
-        std::snprintf(line, sizeof line, "%5d  %5d  %5d  %5d  %4d  %8.3f  %10.3f  %4d  %4llu%s\n",
-                      row.frame, row.alive, row.inWater, row.floating, row.airborne,
-                      row.meanRiseSpeedInWater, row.meanTargetRiseSpeed, row.created,
+        std::snprintf(line, sizeof line,
+                      "%5d  %5d  %5d  %5d  %4d  %8.3f  %8.3f  %10.3f  %4d  %4llu%s\n", row.frame,
+                      row.alive, row.inWater, row.floating, row.airborne, row.meanRiseSpeedInWater,
+                      row.meanSlipSpeedInWater, row.meanTargetRiseSpeed, row.created,
                       (unsigned long long)row.deleted, row.booksBalance ? "" : "  books off");
         out << line;
     }
@@ -101,11 +104,13 @@ void BubbleCensusReport::printText(std::ostream& out) const {
         << percent(t.airborneShare()) << '\n';
     char line[256];
     std::snprintf(line, sizeof line,
-                  "rise in water %.3f m/s (target %.3f); first seen: depth %.3f m, %llu in "
-                  "water, %llu floating, %llu airborne; lifetime %.2f s over %llu ended\n",
-                  t.meanRiseSpeedInWater, t.meanTargetRiseSpeed, t.meanDepthAtCreation,
-                  (unsigned long long)t.newInWater, (unsigned long long)t.newFloating,
-                  (unsigned long long)t.newAirborne, t.meanLifetime, (unsigned long long)t.ended);
+                  "rise in water %.3f m/s, %.3f relative to the water (target %.3f); first seen: "
+                  "depth %.3f m, %llu in water, %llu floating, %llu airborne; lifetime %.2f s "
+                  "over %llu ended\n",
+                  t.meanRiseSpeedInWater, t.meanSlipSpeedInWater, t.meanTargetRiseSpeed,
+                  t.meanDepthAtCreation, (unsigned long long)t.newInWater,
+                  (unsigned long long)t.newFloating, (unsigned long long)t.newAirborne,
+                  t.meanLifetime, (unsigned long long)t.ended);
     out << line;
     std::snprintf(line, sizeof line, "in water per frame over the second half: %.1f\n",
                   inWaterSecondHalf());

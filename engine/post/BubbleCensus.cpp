@@ -28,6 +28,14 @@ Vec3d upOf(const Scene& scene) {
 BubbleCensus::BubbleCensus(const Scene& scene)
     : scene_(scene), immersion_(scene.solver.particleSpacing) {}
 
+double BubbleCensus::slipSpeed(const BubbleState& bubble, const Vec3d& up) {
+    // The water's velocity as the bake last measured it around the bubble (every 0.25 ms of
+    // simulated time), the one eq. 5 steers the rise against.
+    const Vec3d water =
+        bubble.surroundings.measured ? bubble.surroundings.waterVelocity : Vec3d::Zero();
+    return (bubble.body.linearVelocity - water).dot(up);
+}
+
 double BubbleCensus::targetRiseSpeed(double radius) const {
     const double stokes = 2.0 / 9.0 * scene_.solver.gravity.norm() * radius * radius /
                           scene_.bubbles.kinematicViscosity;
@@ -73,7 +81,7 @@ BubbleCensusFrame BubbleCensus::add(const FrameData& data) {
     const SortedWater water(scene_, state.fluid.positions);
     const Vec3d up = upOf(scene_);
     std::map<std::uint32_t, double> ages;
-    double riseSum = 0.0, targetSum = 0.0;
+    double riseSum = 0.0, slipSum = 0.0, targetSum = 0.0;
     for (const BubbleState& bubble : state.bubbles) {
         const Vec3d& centre = bubble.body.position;
         const auto placement = BubbleImmersion::placement(
@@ -81,6 +89,7 @@ BubbleCensusFrame BubbleCensus::add(const FrameData& data) {
         if (placement == BubbleImmersion::Placement::InWater) {
             ++row.inWater;
             riseSum += bubble.body.linearVelocity.dot(up);
+            slipSum += slipSpeed(bubble, up);
             targetSum += targetRiseSpeed(bubble.radius);
         } else if (placement == BubbleImmersion::Placement::Floating) {
             ++row.floating;
@@ -104,6 +113,7 @@ BubbleCensusFrame BubbleCensus::add(const FrameData& data) {
     lastAge_ = std::move(ages);
     if (row.inWater > 0) {
         row.meanRiseSpeedInWater = riseSum / row.inWater;
+        row.meanSlipSpeedInWater = slipSum / row.inWater;
         row.meanTargetRiseSpeed = targetSum / row.inWater;
     }
 
@@ -113,9 +123,11 @@ BubbleCensusFrame BubbleCensus::add(const FrameData& data) {
     totals_.floating += std::uint64_t(row.floating);
     totals_.airborne += std::uint64_t(row.airborne);
     riseSum_ += riseSum;
+    slipSum_ += slipSum;
     targetSum_ += targetSum;
     if (totals_.inWater > 0) {
         totals_.meanRiseSpeedInWater = riseSum_ / double(totals_.inWater);
+        totals_.meanSlipSpeedInWater = slipSum_ / double(totals_.inWater);
         totals_.meanTargetRiseSpeed = targetSum_ / double(totals_.inWater);
     }
     totals_.created = state.nextBubbleId;

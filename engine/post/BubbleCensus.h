@@ -24,10 +24,13 @@ struct BubbleCensusFrame {
     int floating = 0;                  //!< 7–12 wet probes: at the free surface
     int airborne = 0;                  //!< fewer than 7 wet probes
     double meanRiseSpeedInWater = 0.0; //!< m/s, vertical speed of the bubbles in water
-    double meanTargetRiseSpeed = 0.0;  //!< m/s, their capped Stokes speed (eq. 5)
-    int created = 0;                   //!< bubbles the frame made
-    std::uint64_t deleted = 0;         //!< bubbles the frame deleted, any cause
-    bool booksBalance = true;          //!< created so far = alive + deleted so far
+    //! m/s, the same relative to the water around each (eq. 5's slip; the current carries a
+    //! bubble along on top of it)
+    double meanSlipSpeedInWater = 0.0;
+    double meanTargetRiseSpeed = 0.0; //!< m/s, their capped Stokes speed (eq. 5)
+    int created = 0;                  //!< bubbles the frame made
+    std::uint64_t deleted = 0;        //!< bubbles the frame deleted, any cause
+    bool booksBalance = true;         //!< created so far = alive + deleted so far
 };
 
 struct BubbleCensusTotals {
@@ -35,6 +38,7 @@ struct BubbleCensusTotals {
     std::uint64_t bubbleFrames = 0; //!< living bubbles summed over the frames
     std::uint64_t inWater = 0, floating = 0, airborne = 0;
     double meanRiseSpeedInWater = 0.0;    //!< m/s over every in-water bubble-frame
+    double meanSlipSpeedInWater = 0.0;    //!< m/s, the same relative to the water around each
     double meanTargetRiseSpeed = 0.0;     //!< m/s, the same bubble-frames' capped Stokes speed
     std::uint64_t created = 0;            //!< bubbles made since t = 0 (by the last frame)
     std::uint64_t alive = 0;              //!< alive at the last frame
@@ -75,13 +79,15 @@ private:
     double waterDepthOver(const Vec3d& centre, double radius, const NeighborGrid& grid,
                           const PositionArrays& positions) const;
     double targetRiseSpeed(double radius) const;
+    //! m/s, `bubble`'s vertical speed relative to the water around it.
+    static double slipSpeed(const BubbleState& bubble, const Vec3d& up);
 
     Scene scene_;
     BubbleImmersion immersion_;
     std::vector<BubbleCensusFrame> frames_;
     BubbleCensusTotals totals_;
     std::map<std::uint32_t, double> lastAge_; //!< age of each bubble in the frame before
-    double depthSum_ = 0.0, lifetimeSum_ = 0.0, riseSum_ = 0.0, targetSum_ = 0.0;
+    double depthSum_ = 0.0, lifetimeSum_ = 0.0, riseSum_ = 0.0, slipSum_ = 0.0, targetSum_ = 0.0;
 };
 
 } // namespace airtrap

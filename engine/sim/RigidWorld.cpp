@@ -17,6 +17,8 @@ RigidWorld::RigidWorld(std::vector<RigidBody> bodies, std::size_t sceneryCount,
     if (bubbles.enabled)
         bubbles_.emplace(bubbles, solver, kernel);
     coupling_.setBubblesFrom(firstBubble_);
+    if (solver.divergenceFree())
+        coupling_.setBubbleAddedMass(solver.restDensity);
 }
 
 std::vector<const RigidBody*> RigidWorld::solids() const {

@@ -8,6 +8,7 @@
 #include "rigid/RigidContactSolver.h"
 #include "sph/BoundaryModel.h"
 
+#include <cstdint>
 #include <functional>
 #include <vector>
 
@@ -36,7 +37,15 @@ public:
                  const std::vector<Vec3d>& reactions, double dt,
                  const ExtraForces& extraForces = {});
     //! See RigidContactSolver::setBubblesFrom.
-    void setBubblesFrom(std::size_t index) { contacts_.setBubblesFrom(index); }
+    void setBubblesFrom(std::size_t index) {
+        contacts_.setBubblesFrom(index);
+        bubblesFrom_ = index;
+    }
+    //! Moves the bubbles with the water they carry along (docs/METHOD.md "Bubbles with DFSPH"):
+    //! (m + mₐ) dv/dt = F + m g, with mₐ half the water a bubble displaces (`restDensity`, kg/m³).
+    //! For the divergence-free solver, whose step hands a bubble the water's whole reaction at
+    //! once; 0 (the default) moves them on m alone.
+    void setBubbleAddedMass(double restDensity) { bubbleWaterDensity_ = restDensity; }
 
 private:
     //! One sub-step of advance(): the water's force, gravity, `extraForces`, the contacts, the
@@ -45,9 +54,14 @@ private:
     //! Sums the reactions per body, in the boundary's sorted order so the sum is deterministic.
     void sumReactions(const std::vector<RigidBody>& bodies, const BoundaryModel& boundary,
                       const std::vector<Vec3d>& reactions);
+    //! Rewrites each bubble's force so that the integrator's F/m + g is (F + m g) / (m + mₐ).
+    void addBubblesAddedMass(const std::vector<RigidBody>& bodies);
 
     Vec3d gravity_;
     RigidContactSolver contacts_;
+    std::size_t bubblesFrom_ = SIZE_MAX;
+    double bubbleWaterDensity_ = 0.0; //!< kg/m³; 0: the bubbles move on their own mass
+
     std::vector<Vec3d> forces_;  //!< N, the water's force on each body this step
     std::vector<Vec3d> torques_; //!< N·m, about each body's centre of mass
 };
