@@ -5,6 +5,8 @@
 // default-constructed Scene is valid.
 #include "core/Math.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -63,10 +65,15 @@ struct FluidBlock {
     Vec3d initialVelocity = Vec3d::Zero();
 
     //! Particle layers that fill the block along `axis` at `spacing`: its extent in whole
-    //! spacings, rounded to the nearest, at least one. The validator warns when they do not make
-    //! up the extent exactly.
-    int layers(int axis, double spacing) const {
-        return std::max(1, static_cast<int>(std::lround((max - min)[axis] / spacing)));
+    //! spacings, rounded to the nearest, at least one, but no more than fit below `wall` (m along
+    //! `axis`, the simulation domain's far side): a layer rounded up past a tank wall would sit
+    //! in the wall's boundary layer, squeezed to a density the pressure solve cannot bring back
+    //! in one step. The validator warns when they do not make up the extent exactly.
+    int layers(int axis, double spacing, double wall) const {
+        const int nearest = static_cast<int>(std::lround((max - min)[axis] / spacing));
+        // A micrometre's slack: 0.3 m of 0.02 m layers is 15, not 14.999999999999998.
+        const int room = static_cast<int>(std::floor((wall - min[axis]) / spacing + 1e-6));
+        return std::max(1, std::min(nearest, room));
     }
 };
 

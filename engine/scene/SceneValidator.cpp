@@ -157,17 +157,20 @@ private:
     void checkBlockFit(const std::string& label, const FluidBlock& block, int axis,
                        double spacing) {
         const double extent = block.max[axis] - block.min[axis];
-        const int layers = block.layers(axis, spacing);
+        const double wall = scene_.domain().max[axis];
+        const int layers = block.layers(axis, spacing, wall);
         const double filled = layers * spacing;
         if (std::abs(filled - extent) <= 1e-6 * spacing)
             return;
+        const bool heldByWall = layers < std::lround(extent / spacing);
         // Lengths to a micrometre: 28 × 0.02 is 0.56000000000000005 in binary.
-        char text[256];
+        char text[320];
         std::snprintf(text, sizeof text,
                       " is %.6g m along %s, not a whole number of %s = %s m: it is filled with %d "
-                      "layers, %.6g m of water (max.%s = %.6g would draw exactly that)",
+                      "layers, %.6g m of water%s (max.%s = %.6g would draw exactly that)",
                       extent, kAxes[axis], key(&SolverSettings::particleSpacing).c_str(),
-                      number(spacing).c_str(), layers, filled, kAxes[axis],
+                      number(spacing).c_str(), layers, filled,
+                      heldByWall ? ", as many as fit inside the container" : "", kAxes[axis],
                       block.min[axis] + filled);
         warning(label + text);
     }

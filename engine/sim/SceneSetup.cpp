@@ -106,7 +106,7 @@ void SceneSetup::fillFluid(const Scene& scene, const std::vector<RigidBody>& bod
         const FluidBlock& b = scene.fluidBlocks[block];
         Vec3i count;
         for (int axis = 0; axis < 3; ++axis)
-            count[axis] = b.layers(axis, dx);
+            count[axis] = b.layers(axis, dx, domain.max[axis]);
         const Vec3f velocity = b.initialVelocity.cast<float>();
         // The water's surface is the lattice's top, which differs from the block's drawn top
         // when its height is not whole spacings (the validator says so): the hydrostatic start

@@ -124,6 +124,22 @@ private Q_SLOTS:
                  warnings[0].c_str());
     }
 
+    //! Rounded to the nearest, the lattice would reach past the tank's wall and squeeze its
+    //! last layer into the wall's boundary particles.
+    void aBlockIsNeverFilledPastTheContainer() {
+        Scene scene = validScene();
+        scene.solver.particleSpacing = 0.0115; // the block's 1 m along z: 86.96 spacings
+        scene.fluidBlocks[0].max = Vec3d(0.506, 0.506, 1.0); // 44 whole spacings along x, y
+        const std::vector<std::string> warnings = validateScene(scene);
+        QCOMPARE(warnings.size(), std::size_t(1));
+        QVERIFY2(contains(warnings[0],
+                          "is 1 m along z, not a whole number of solver.particle_spacing = 0.0115 "
+                          "m: it is filled with 86 layers, 0.989 m of water, as many as fit inside "
+                          "the container (max.z = 0.989 would draw exactly that)"),
+                 warnings[0].c_str());
+        QCOMPARE(scene.fluidBlocks[0].layers(2, 0.0115, scene.domain().max.z()), 86);
+    }
+
     void touchingBoxesDoNotOverlap() {
         Scene scene = validScene();
         scene.obstacles[0].center = Vec3d(0.6, 0.25, 0.5); // x from 0.5: touches the block
