@@ -147,12 +147,13 @@ double BubbleDynamics::touchingWater(const RigidBody& body, double radius, const
 }
 
 void BubbleDynamics::applyForces(std::vector<RigidBody>& bodies, std::size_t first,
-                                 const std::vector<BubbleState>& start, double dt) const {
+                                 const std::vector<BubbleState>& bubbles,
+                                 const std::vector<Vec3d>& before, double dt) const {
     const bool steer = gravity_.squaredNorm() > 0.0;
     const Vec3d up = steer ? Vec3d(-gravity_.normalized()) : Vec3d::UnitY();
     for (std::size_t k = 0; k < bodyIds_.size(); ++k) {
         RigidBody& body = bodies[first + k];
-        const BubbleSurroundings& around = start.at(k).surroundings;
+        const BubbleSurroundings& around = bubbles.at(k).surroundings;
         RigidBodyState state = body.state();
         const double radius = radii_[k];
         const double stokesDrag = 6.0 * kPi * restDensity_ * settings_.kinematicViscosity * radius;
@@ -165,7 +166,10 @@ void BubbleDynamics::applyForces(std::vector<RigidBody>& bodies, std::size_t fir
         if (steer && immersed > 0.0) {
             const double target = around.waterVelocity.dot(up) + riseSpeed(radius);
             const double relax = immersed * dt / settings_.riseTime;
-            const double startSpeed = start.at(k).body.linearVelocity.dot(up);
+            // From the sub-step's own start: the bodies' steps are split at
+            // RigidCoupling::kMaxContactStep, and relaxing each piece from the whole step's
+            // start would steer a long step only as much as its last piece.
+            const double startSpeed = before.at(first + k).dot(up);
             const double steered = (startSpeed + relax * target) / (1.0 + relax);
             velocity += (steered - velocity.dot(up)) * up;
         }

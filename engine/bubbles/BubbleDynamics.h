@@ -59,9 +59,11 @@ public:
                              const NeighborGrid& grid) const;
 
     //! Drag and steering, once the water's force and gravity have changed the bodies' velocities
-    //! for a step of `dt` s; `start` holds the bubbles as the step began, with their surroundings.
+    //! over a (sub-)step of `dt` s; `before` holds every body's linear velocity as that sub-step
+    //! began, `bubbles` the bubbles' surroundings measured for the step.
     void applyForces(std::vector<RigidBody>& bodies, std::size_t first,
-                     const std::vector<BubbleState>& start, double dt) const;
+                     const std::vector<BubbleState>& bubbles, const std::vector<Vec3d>& before,
+                     double dt) const;
     //! The impulses between touching bubbles.
     void applyPairImpulses(std::vector<RigidBody>& bodies, std::size_t first) const;
 

@@ -78,11 +78,12 @@ bool RigidWorld::move(SimulationState& state, const BoundaryModel& boundary,
         coupling_.advance(bodies_, boundary, reactions, dt);
         return storeMoved(state);
     }
-    coupling_.advance(bodies_, boundary, reactions, dt,
-                      [&](std::vector<RigidBody>& bodies, double step) {
-                          bubbles_->applyForces(bodies, firstBubble_, state.bubbles, step);
-                          bubbles_->applyPairImpulses(bodies, firstBubble_);
-                      });
+    coupling_.advance(
+        bodies_, boundary, reactions, dt,
+        [&](std::vector<RigidBody>& bodies, const std::vector<Vec3d>& before, double step) {
+            bubbles_->applyForces(bodies, firstBubble_, state.bubbles, before, step);
+            bubbles_->applyPairImpulses(bodies, firstBubble_);
+        });
     return storeMoved(state);
 }
 

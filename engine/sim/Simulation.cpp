@@ -94,7 +94,7 @@ Simulation::Simulation(Scene scene, SimulationState resumeFrom)
     : scene_(std::move(scene)), state_(std::move(resumeFrom)), water_(makePressureSolver(scene_)),
       bodies_(SceneSetup::buildBodies(scene_), SceneSetup::sceneryCount(scene_), scene_.solver,
               scene_.bubbles, water_->kernel()) {
-    water_->placeBoundary(bodies_.bodies());
+    water_->placeBoundary(bodies_.bodies(), bodies_.firstBubbleBody());
     water_->restoreWarmStart(state_.warmStart);
     for (const InflowEmitterSettings& settings : scene_.emitters)
         emitters_.emplace_back(settings, scene_.solver.particleSpacing, scene_.solver.restDensity);
@@ -183,7 +183,7 @@ StepReport Simulation::takeStep(double timeToFrameEnd, double frameEnd) {
     if (bodies_.needPlacing(state_))
         runBeside(sortWater, timed(phases_, StepPhases::Bodies, [&] {
                       bodies_.place(state_);
-                      water.placeBoundary(bodies_.bodies());
+                      water.placeBoundary(bodies_.bodies(), bodies_.firstBubbleBody());
                   }));
     else
         sortWater();

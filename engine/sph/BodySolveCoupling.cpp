@@ -52,7 +52,7 @@ void BodySolveCoupling::begin(const BoundaryModel& boundary, const PositionArray
         motion.inverseInertia = terms.inverseInertia;
         const double addedMass = kAddedMassShare * restDensity_ * terms.volume;
         motion.initialRelaxation = motion.mass / (motion.mass + addedMass);
-        holdsSinkingBody_ = holdsSinkingBody_ || motion.mass >= restDensity_ * terms.volume;
+        holdsSinkingBody_ = holdsSinkingBody_ || terms.sinksIn(restDensity_);
         motionOf_[body] = static_cast<std::int32_t>(bodies_.size());
         bodies_.push_back(motion);
     }

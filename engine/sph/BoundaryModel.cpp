@@ -5,7 +5,7 @@ namespace airtrap {
 BoundaryModel::BoundaryModel(const Aabb& gridDomain, float cellSize, float restDensity)
     : static_(gridDomain, cellSize, restDensity), moving_(gridDomain, cellSize, restDensity) {}
 
-void BoundaryModel::rebuild(const std::vector<RigidBody>& bodies) {
+void BoundaryModel::rebuild(const std::vector<RigidBody>& bodies, std::size_t firstBubble) {
     std::vector<std::uint32_t> staticMembers;
     movingMembers_.clear();
     for (std::uint32_t index = 0; index < bodies.size(); ++index)
@@ -16,10 +16,10 @@ void BoundaryModel::rebuild(const std::vector<RigidBody>& bodies) {
         staticPlaced_ = true;
     }
     moving_.rebuild(bodies, movingMembers_);
-    gatherTerms(bodies);
+    gatherTerms(bodies, firstBubble);
 }
 
-void BoundaryModel::gatherTerms(const std::vector<RigidBody>& bodies) {
+void BoundaryModel::gatherTerms(const std::vector<RigidBody>& bodies, std::size_t firstBubble) {
     terms_.resize(bodies.size());
     hasDynamicBodies_ = false;
     for (std::size_t index = 0; index < bodies.size(); ++index) {
@@ -28,6 +28,7 @@ void BoundaryModel::gatherTerms(const std::vector<RigidBody>& bodies) {
         terms.restitution = static_cast<float>(body.waterMaterial().restitution);
         terms.friction = static_cast<float>(body.waterMaterial().friction);
         terms.dynamic = body.isDynamic();
+        terms.bubble = index >= firstBubble;
         terms.centre = body.position();
         terms.inverseMass = body.inertia().inverseMass();
         terms.inverseInertia = body.inertia().inverseInertiaWorld(body.orientation());

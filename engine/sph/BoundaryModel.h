@@ -10,6 +10,7 @@
 #include "sph/NeighborSweep.h"
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace airtrap {
@@ -19,8 +20,10 @@ public:
     BoundaryModel(const Aabb& gridDomain, float cellSize, float restDensity);
 
     //! Places the bodies at their current poses: the static ones only the first time (or when
-    //! the set of static bodies changed), the moving ones every time.
-    void rebuild(const std::vector<RigidBody>& bodies);
+    //! the set of static bodies changed), the moving ones every time. The bodies from index
+    //! `firstBubble` on are bubbles'.
+    void rebuild(const std::vector<RigidBody>& bodies, std::size_t firstBubble = kNoBubbles);
+    static constexpr std::size_t kNoBubbles = std::numeric_limits<std::size_t>::max();
 
     const BoundaryLayer& staticLayer() const { return static_; }
     //! Holds every dynamic body's particles: the water's reaction is gathered here.
@@ -41,7 +44,7 @@ public:
     std::size_t allocatedBytes() const;
 
 private:
-    void gatherTerms(const std::vector<RigidBody>& bodies);
+    void gatherTerms(const std::vector<RigidBody>& bodies, std::size_t firstBubble);
 
     BoundaryLayer static_;
     BoundaryLayer moving_;

@@ -66,7 +66,10 @@ constexpr double kChebyshevRestartGrowth = 2.0;
 //! next solve removes the excess at once, as a speed excess/Δt that throws the body back: the
 //! 10ρ cube of samples/buoyancy.json landed at 1.4 m/s and bounced up at 2–3 m/s under the
 //! flow's step alone (0.25 spacings per step), 0.28 m/s at 0.05 and landed on another face at 0.2
-//! (docs/VALIDATION.md "Bodies with DFSPH").
+//! (docs/VALIDATION.md "Bodies with DFSPH"). Bubbles are not held to it: their vertical speed is
+//! steered and their drag pulls them toward the water's velocity, both implicitly (eqs. 5, 6), so
+//! they move with the water rather than squeeze it, and a bubble swept along by a jet would
+//! otherwise set the step of the whole tank (docs/METHOD.md "Bodies and the step").
 constexpr double kBodyCflFactor = 0.05;
 
 //! Σ f(i) over [0, n), split and added in the same order on any number of threads.
@@ -127,8 +130,8 @@ void DfsphSolver::sortByCell(ParticleSet& fluid, StepReport& report) {
                         sortedPositions_, report);
 }
 
-void DfsphSolver::placeBoundary(const std::vector<RigidBody>& bodies) {
-    boundary_.rebuild(bodies);
+void DfsphSolver::placeBoundary(const std::vector<RigidBody>& bodies, std::size_t firstBubble) {
+    boundary_.rebuild(bodies, firstBubble);
 }
 
 void DfsphSolver::pairMovingBoundary() {
@@ -478,7 +481,8 @@ double DfsphSolver::fastestBodySpeed() const {
     const BoundaryLayer& layer = boundary_.movingLayer();
     double fastest = 0.0;
     for (std::size_t b = 0; b < layer.size(); ++b)
-        if (boundary_.contactTerms(layer.bodyOf()[b]).dynamic)
+        if (const BodyContactTerms& terms = boundary_.contactTerms(layer.bodyOf()[b]);
+            terms.dynamic && !terms.bubble)
             fastest = std::max(fastest, double(layer.velocities()[b].norm()));
     return fastest;
 }

@@ -25,14 +25,14 @@ public:
     DfsphSolver(const SolverSettings& settings, const Aabb& domain);
 
     void sortByCell(ParticleSet& fluid, StepReport& report) override;
-    void placeBoundary(const std::vector<RigidBody>& bodies) override;
+    void placeBoundary(const std::vector<RigidBody>& bodies, std::size_t firstBubble) override;
     void pairMovingBoundary() override;
     //! ρᵢ = Σⱼ mⱼWᵢⱼ + Σ_b Ψ_b W_ib and the factors αᵢ of both solves; the nearest body for the
     //! contact impulse; the warm start carried into this step's order.
     void prepareDensities(ParticleSet& fluid, StepReport& report) override;
     void solveDivergence(double lastTimeStep, StepReport& report) override;
     //! Δt = λ Δx / |v|max within [min_time_step, max_time_step], and short enough for the
-    //! dynamic bodies too (kBodyCflFactor).
+    //! dynamic bodies other than bubbles too (kBodyCflFactor).
     void chooseTimeStep(double lastMaxAcceleration, double timeToFrameEnd,
                         StepReport& report) const override;
     //! The density solve on the velocities the non-pressure forces predict for `dt`.
@@ -81,7 +81,8 @@ private:
     double densityResiduals(float dt, const float* densities, float chebyshevWeight);
     //! The step the flow alone allows: λ Δx / |v|max within max_time_step.
     double flowTimeStep(double maxSpeed) const;
-    //! The largest speed (m/s) of a dynamic body's boundary particle at the step's start.
+    //! The largest speed (m/s) of a dynamic body's boundary particle at the step's start,
+    //! bubbles left out.
     double fastestBodySpeed() const;
     //! The dynamic bodies' velocities after the stiffness applied so far in `solve`
     //! (BodySolveCoupling).

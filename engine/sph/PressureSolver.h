@@ -28,9 +28,9 @@ public:
     //! Sorts the particles by cell onto grid(), dropping those outside the domain; reports how
     //! many left and the largest speed (for Δt).
     virtual void sortByCell(ParticleSet& fluid, StepReport& report) = 0;
-    //! Places the boundary particles of `bodies` at their current poses. Touches no water, so
-    //! it may run beside sortByCell().
-    virtual void placeBoundary(const std::vector<RigidBody>& bodies) = 0;
+    //! Places the boundary particles of `bodies` at their current poses; those from index
+    //! `firstBubble` on are bubbles'. Touches no water, so it may run beside sortByCell().
+    virtual void placeBoundary(const std::vector<RigidBody>& bodies, std::size_t firstBubble) = 0;
     //! Finds the water near the moving bodies' boundary particles on this step's grid.
     virtual void pairMovingBoundary() = 0;
     //! DFSPH: the densities by summation and the factors of both solves, on this step's grid.

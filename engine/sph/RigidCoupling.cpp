@@ -80,17 +80,20 @@ void RigidCoupling::advanceSubstep(std::vector<RigidBody>& bodies, double dt,
                                    const ExtraForces& extraForces) {
     std::vector<Vec3d> turnRates(bodies.size(), Vec3d::Zero());
     std::vector<Vec3d> spinBeforeContacts(bodies.size(), Vec3d::Zero());
+    std::vector<Vec3d> velocitiesBefore(extraForces ? bodies.size() : 0, Vec3d::Zero());
     for (std::size_t k = 0; k < bodies.size(); ++k) {
         if (!bodies[k].isDynamic())
             continue;
         RigidBodyState state = bodies[k].state();
+        if (extraForces)
+            velocitiesBefore[k] = state.linearVelocity;
         turnRates[k] = RigidIntegrator::accelerate(state, bodies[k].inertia(), forces_[k],
                                                    torques_[k], gravity_, dt);
         spinBeforeContacts[k] = state.angularVelocity;
         bodies[k].setState(state);
     }
     if (extraForces)
-        extraForces(bodies, dt);
+        extraForces(bodies, velocitiesBefore, dt);
     const std::vector<RigidVelocity> pushes = contacts_.solve(bodies, dt);
     for (std::size_t k = 0; k < bodies.size(); ++k) {
         if (!bodies[k].isDynamic())

@@ -28,8 +28,10 @@ public:
     RigidCoupling(const Vec3d& gravity, double spacing);
 
     //! Changes the bodies' velocities once the water's force and gravity have acted, before
-    //! contacts: the bubbles' own forces.
-    using ExtraForces = std::function<void(std::vector<RigidBody>& bodies, double dt)>;
+    //! contacts: the bubbles' own forces. `before` holds each body's linear velocity as the
+    //! sub-step of `dt` s began, before the water's force and gravity.
+    using ExtraForces = std::function<void(std::vector<RigidBody>& bodies,
+                                           const std::vector<Vec3d>& before, double dt)>;
 
     //! Moves the dynamic bodies of `bodies` over `dt` (s). `reactions` holds the water's force
     //! on each sorted particle of the boundary's moving layer (InteractionPass::bodyReactions).

@@ -79,8 +79,8 @@ void WcsphSolver::computeBodyReactions(const ParticleSet& fluid, double dt) {
     passes_.bodyReactions(inputs(fluid), pressureOverDensity2_, contacts_, dt, reactions_);
 }
 
-void WcsphSolver::placeBoundary(const std::vector<RigidBody>& bodies) {
-    boundary_.rebuild(bodies);
+void WcsphSolver::placeBoundary(const std::vector<RigidBody>& bodies, std::size_t firstBubble) {
+    boundary_.rebuild(bodies, firstBubble);
 }
 
 void WcsphSolver::sortByCell(ParticleSet& fluid, StepReport& report) {

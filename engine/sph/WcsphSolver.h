@@ -20,7 +20,7 @@ public:
     WcsphSolver(const SolverSettings& settings, const Aabb& domain);
 
     void sortByCell(ParticleSet& fluid, StepReport& report) override;
-    void placeBoundary(const std::vector<RigidBody>& bodies) override;
+    void placeBoundary(const std::vector<RigidBody>& bodies, std::size_t firstBubble) override;
     void pairMovingBoundary() override;
     //! Nothing: the densities come from the continuity equation in computeDensities().
     void prepareDensities(ParticleSet&, StepReport&) override {}
