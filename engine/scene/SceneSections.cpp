@@ -67,8 +67,8 @@ SchemaSection solverSection() {
                              .help = "wcsph: weakly compressible, a step limited by the speed of "
                                      "sound (10 × max_speed). dfsph: divergence-free, "
                                      "incompressible to density_error, a step limited only by "
-                                     "the flow's speed. dfsph is in development: a resting "
-                                     "pool is not yet calm (docs/VALIDATION.md).",
+                                     "the flow's speed; its jets splash less and trap less "
+                                     "air (docs/VALIDATION.md \"Bubbles with DFSPH\").",
                              .choices = {"wcsph", "dfsph"}},
                             &SolverSettings::method),
          bind<SolverAccess>({.key = "particle_spacing",
