@@ -1,7 +1,8 @@
 // The pairs of water and moving-layer particles are found by sweeping around the layer's
 // particles: every pair closer than the support radius must be listed, or the passes would miss
 // its boundary force; both views must list the same pairs in ascending order, which is what keeps
-// the passes' sums identical to a grid sweep's; and a new search must forget the last one.
+// the passes' sums identical to a grid sweep's; and a new search must forget the last one. The
+// bodies' contact terms mark the bubbles and the bodies that can sink.
 #include "rigid/MassProperties.h"
 #include "rigid/RigidBody.h"
 #include "rigid/ShapeSampler.h"
@@ -150,6 +151,25 @@ private Q_SLOTS:
         const Vec3f far(0.1f, 0.9f, 0.1f);
         QVERIFY(fixed.reaches(beside));
         QVERIFY(!fixed.reaches(far));
+    }
+
+    //! The contact terms say which bodies are bubbles (DFSPH leaves them out of the bodies' step
+    //! limit) and which can sink (at least as dense as the water).
+    void theTermsMarkBubblesAndSinkingBodies() {
+        std::vector<RigidBody> bodies = {sphereBody(Vec3d(0.3, 0.2, 0.25), 0.05, true),
+                                         sphereBody(Vec3d(0.6, 0.1, 0.3), 0.04, false),
+                                         sphereBody(Vec3d(0.5, 0.35, 0.2), 0.03, true)};
+        BoundaryModel model(kModelDomain, kModelSupport, 1000.0f);
+        model.rebuild(bodies, 2);
+        QVERIFY(!model.contactTerms(0).bubble);
+        QVERIFY(!model.contactTerms(1).bubble);
+        QVERIFY(model.contactTerms(2).bubble);
+        model.rebuild(bodies);
+        QVERIFY(!model.contactTerms(2).bubble);
+        // The spheres are 100 kg/m³: they float in water and sink in a 50 kg/m³ liquid.
+        QVERIFY(!model.contactTerms(0).sinksIn(1000.0));
+        QVERIFY(model.contactTerms(0).sinksIn(50.0));
+        QVERIFY(!model.contactTerms(1).sinksIn(50.0)); // static
     }
 };
 
