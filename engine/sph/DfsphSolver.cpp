@@ -7,6 +7,7 @@
 #include "sph/FrameLanding.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -220,23 +221,14 @@ void DfsphSolver::prepareDensities(ParticleSet& fluid, StepReport& report) {
 void DfsphSolver::prepareParticle(ParticleSet& fluid, std::size_t i, NeighborList::Sink& sink) {
     velocities_[i] = padded(fluid.velocities[i]);
     packedPositions_[i] = padded(sortedPositions_[i]);
-    float weights = kernel_.value(0.0f);
-    Vec3f gradientSum = Vec3f::Zero();
-    float gradientSquares = 0.0f;
-    std::uint32_t count = 0;
-    sweepNeighbors(grid_, sortedPositions_, i, radius2_,
-                   [&](std::uint32_t j, const Vec3f& d, float r2) {
-                       weights += kernel_.value(std::sqrt(r2));
-                       // α from the factor the solves' passes will read back.
-                       const NeighborList::Value code = kernel_.gradientFactorCode(r2);
-                       const Vec3f grad = (kernel_.gradientFactorStep() * float(code)) * d;
-                       gradientSum += grad;
-                       gradientSquares += grad.squaredNorm();
-                       sink.add(j, code);
-                       ++count;
-                   });
+    WaterSums water{kernel_.value(0.0f)};
+    sweepNeighborBatchesAround(grid_, sortedPositions_, sortedPositions_[i], radius2_,
+                               [&](const std::uint32_t* batch, std::size_t size) {
+                                   addWaterPairs(i, batch, size, water, sink);
+                               });
+    std::uint32_t count = water.count;
 
-    float density = mass_ * weights;
+    float density = mass_ * water.weights;
     Vec3f boundaryGradient = Vec3f::Zero();
     float boundaryRate = 0.0f;
     BoundaryContact::Nearest nearest;
@@ -259,12 +251,43 @@ void DfsphSolver::prepareParticle(ParticleSet& fluid, std::size_t i, NeighborLis
     nearestIsMoving_[i] = nearest.layer == &boundary_.movingLayer();
 
     // αᵢ: how much qᵢ alone changes Dρᵢ/Dt, its own velocity and its neighbours' together.
-    const Vec3f waterGradient = mass_ * gradientSum;
+    const Vec3f waterGradient = mass_ * water.gradientSum;
     const float denominator = (waterGradient + kWallPressureShare * boundaryGradient)
                                   .dot(waterGradient + boundaryGradient) +
-                              mass_ * mass_ * gradientSquares;
+                              mass_ * mass_ * water.gradientSquares;
     factors_[i] = denominator > 0.0f ? 1.0f / denominator : 0.0f;
     interior_[i] = count >= kInteriorNeighbours;
+}
+
+void DfsphSolver::addWaterPairs(std::size_t i, const std::uint32_t* batch, std::size_t size,
+                                WaterSums& sums, NeighborList::Sink& sink) const {
+    std::array<std::uint32_t, kSweepBatch> indices;
+    std::array<NeighborList::Value, kSweepBatch> codes;
+    const float* px = sortedPositions_.x.data();
+    const float* py = sortedPositions_.y.data();
+    const float* pz = sortedPositions_.z.data();
+    const Vec3f xi = sortedPositions_[i];
+    WaterSums local = sums;
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < size; ++k) {
+        const std::uint32_t j = batch[k];
+        if (j == i)
+            continue;
+        const Vec3f d(xi.x() - px[j], xi.y() - py[j], xi.z() - pz[j]);
+        const float r2 = d.squaredNorm();
+        local.weights += kernel_.value(std::sqrt(r2));
+        // α from the factor the solves' passes will read back.
+        const NeighborList::Value code = kernel_.gradientFactorCode(r2);
+        const Vec3f grad = (kernel_.gradientFactorStep() * float(code)) * d;
+        local.gradientSum += grad;
+        local.gradientSquares += grad.squaredNorm();
+        indices[kept] = j;
+        codes[kept] = code;
+        ++kept;
+    }
+    local.count += static_cast<std::uint32_t>(kept);
+    sink.add(indices.data(), codes.data(), kept);
+    sums = local;
 }
 
 void DfsphSolver::carryWarmStart(std::size_t n) {
@@ -300,16 +323,22 @@ float DfsphSolver::densityRate(std::size_t i) const {
     return mass_ * products.sum() + vi.head<3>().dot(boundaryGradient_[i]) - boundaryRate_[i];
 }
 
+void DfsphSolver::storeDensityRates(bool interiorOnly) {
+    tbb::parallel_for(Range(0, velocities_.size(), kSolveGrain), [&](const Range& r) {
+        for (std::size_t i = r.begin(); i != r.end(); ++i)
+            stiffness_[i] = interiorOnly && !interior_[i] ? 0.0f : densityRate(i);
+    });
+}
+
 double DfsphSolver::divergenceResiduals() {
     const std::size_t n = velocities_.size();
+    storeDensityRates(true);
     const double sum = deterministicSum(n, [&](std::size_t i) {
-        if (!interior_[i]) {
-            stiffness_[i] = 0.0f;
+        if (!interior_[i])
             return 0.0f;
-        }
         // Compression only: expansion is the free surface's, not an error, and water does not
         // pull.
-        const float rate = std::max(densityRate(i), 0.0f);
+        const float rate = std::max(stiffness_[i], 0.0f);
         stiffness_[i] = rate * factors_[i];
         return rate;
     });
@@ -319,8 +348,9 @@ double DfsphSolver::divergenceResiduals() {
 double DfsphSolver::densityResiduals(float dt, const float* densities, float chebyshevWeight) {
     const std::size_t n = velocities_.size();
     const float restDensity = static_cast<float>(settings_.restDensity);
+    storeDensityRates(false);
     const double sum = deterministicSum(n, [&](std::size_t i) {
-        const float compression = densities[i] + dt * densityRate(i) - restDensity;
+        const float compression = densities[i] + dt * stiffness_[i] - restDensity;
         const float current = densityTotal_[i];
         // Water does not pull: the stiffness stays at or above zero (a complementarity problem,
         // solved by projecting each iterate).

@@ -65,13 +65,31 @@ private:
         bool converged = true;
     };
 
+    //! The sums over one water particle's water neighbours that prepareParticle() needs.
+    struct WaterSums {
+        float weights = 0.0f;              //!< Σⱼ Wᵢⱼ, W(0) included
+        Vec3f gradientSum = Vec3f::Zero(); //!< Σⱼ ∇Wᵢⱼ from the stored codes
+        float gradientSquares = 0.0f;      //!< Σⱼ |∇Wᵢⱼ|²
+        std::uint32_t count = 0;           //!< neighbours
+    };
+
     //! Sweeps water particle i's neighbours once: density, α, boundary sums, nearest body.
     void prepareParticle(ParticleSet& fluid, std::size_t i, NeighborList::Sink& sink);
+    //! Adds the pairs of one batch of the sweep (i itself skipped) to `sums` and to the list. The
+    //! totals are locals of its loop: summed through the sweep's call per pair they stayed in
+    //! memory, each addition waiting on the last one's store (docs/PERFORMANCE.md).
+    void addWaterPairs(std::size_t i, const std::uint32_t* batch, std::size_t size, WaterSums& sums,
+                       NeighborList::Sink& sink) const;
     //! Iterates `solve` until its average residual is at most `tolerance` (kg/m³, per second for
     //! the divergence), starting from the stiffness already in `total`.
     //! `densities` (kg/m³) are the step's, for the density solve.
     Outcome iterate(Solve solve, float dt, double tolerance, std::vector<float>& total,
                     const float* densities);
+    //! stiffness_[i] ← Dρᵢ/Dt for every particle (or only the interior ones, 0 elsewhere). A pass
+    //! of its own: with the residual's arithmetic after each particle's sum, that arithmetic's
+    //! latency (a horizontal sum, a division) held up the next particle's pairs: 10 % of a step's
+    //! profile, 4 % in a pass of its own (docs/PERFORMANCE.md).
+    void storeDensityRates(bool interiorOnly);
     //! Each interior particle's compression rate and the stiffness increment that removes it
     //! (into stiffness_); returns the average compression rate.
     double divergenceResiduals();

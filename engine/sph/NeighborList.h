@@ -30,6 +30,11 @@ public:
             indices_.push_back(j);
             values_.push_back(value);
         }
+        //! count pairs at once: js[k] with values[k].
+        void add(const std::uint32_t* js, const Value* values, std::size_t count) {
+            indices_.insert(indices_.end(), js, js + count);
+            values_.insert(values_.end(), values, values + count);
+        }
 
     private:
         friend class NeighborList;
