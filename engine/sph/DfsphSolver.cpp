@@ -261,32 +261,43 @@ void DfsphSolver::prepareParticle(ParticleSet& fluid, std::size_t i, NeighborLis
 
 void DfsphSolver::addWaterPairs(std::size_t i, const std::uint32_t* batch, std::size_t size,
                                 WaterSums& sums, NeighborList::Sink& sink) const {
+    // Room for the kernel's four-wide writes past the count.
     std::array<std::uint32_t, kSweepBatch> indices;
-    std::array<NeighborList::Value, kSweepBatch> codes;
+    std::array<Vec3f, kSweepBatch> offsets;
+    std::array<float, kSweepBatch + 3> distance2;
+    std::array<float, kSweepBatch + 3> weights;
+    std::array<std::int32_t, kSweepBatch + 3> codes;
+    std::array<NeighborList::Value, kSweepBatch> listed;
     const float* px = sortedPositions_.x.data();
     const float* py = sortedPositions_.y.data();
     const float* pz = sortedPositions_.z.data();
     const Vec3f xi = sortedPositions_[i];
-    WaterSums local = sums;
     std::size_t kept = 0;
     for (std::size_t k = 0; k < size; ++k) {
         const std::uint32_t j = batch[k];
         if (j == i)
             continue;
-        const Vec3f d(xi.x() - px[j], xi.y() - py[j], xi.z() - pz[j]);
-        const float r2 = d.squaredNorm();
-        local.weights += kernel_.value(std::sqrt(r2));
+        offsets[kept] = Vec3f(xi.x() - px[j], xi.y() - py[j], xi.z() - pz[j]);
+        distance2[kept] = offsets[kept].squaredNorm();
+        indices[kept++] = j;
+    }
+    std::fill(distance2.begin() + kept, distance2.begin() + kept + 3, 0.0f);
+    // The kernel's values and codes first, for the batch at once; then the sums in pair order, in
+    // registers: summed through the sweep's call per pair they stayed in memory, each addition
+    // waiting on the last one's store.
+    kernel_.valuesAndFactorCodes(distance2.data(), kept, weights.data(), codes.data());
+    WaterSums local = sums;
+    for (std::size_t k = 0; k < kept; ++k) {
+        local.weights += weights[k];
         // α from the factor the solves' passes will read back.
-        const NeighborList::Value code = kernel_.gradientFactorCode(r2);
-        const Vec3f grad = (kernel_.gradientFactorStep() * float(code)) * d;
+        const auto code = static_cast<NeighborList::Value>(codes[k]);
+        const Vec3f grad = (kernel_.gradientFactorStep() * float(code)) * offsets[k];
         local.gradientSum += grad;
         local.gradientSquares += grad.squaredNorm();
-        indices[kept] = j;
-        codes[kept] = code;
-        ++kept;
+        listed[k] = code;
     }
     local.count += static_cast<std::uint32_t>(kept);
-    sink.add(indices.data(), codes.data(), kept);
+    sink.add(indices.data(), listed.data(), kept);
     sums = local;
 }
 

@@ -75,9 +75,8 @@ private:
 
     //! Sweeps water particle i's neighbours once: density, α, boundary sums, nearest body.
     void prepareParticle(ParticleSet& fluid, std::size_t i, NeighborList::Sink& sink);
-    //! Adds the pairs of one batch of the sweep (i itself skipped) to `sums` and to the list. The
-    //! totals are locals of its loop: summed through the sweep's call per pair they stayed in
-    //! memory, each addition waiting on the last one's store (docs/PERFORMANCE.md).
+    //! Adds the pairs of one batch of the sweep (i itself skipped) to `sums` and to the list
+    //! (docs/PERFORMANCE.md "Latency taken out of three loops").
     void addWaterPairs(std::size_t i, const std::uint32_t* batch, std::size_t size, WaterSums& sums,
                        NeighborList::Sink& sink) const;
     //! Iterates `solve` until its average residual is at most `tolerance` (kg/m³, per second for

@@ -6,6 +6,8 @@
 #include <QtTest>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
+#include <vector>
 
 using namespace airtrap;
 
@@ -95,6 +97,31 @@ private Q_SLOTS:
                 kernel.gradientFactorStep() * float(kernel.gradientFactorCode(r * r));
             QVERIFY2(std::abs(decoded - exact) <= 8e-6f * largest,
                      qPrintable(QString("r=%1: %2 vs %3").arg(r).arg(decoded).arg(exact)));
+        }
+    }
+
+    //! The batch form (four at a time on SSE2) gives the same bits as value() and
+    //! gradientFactorCode() one by one, at every distance within the support and past it, for a
+    //! count that is not a multiple of four.
+    void batchValuesAndCodesMatchOneByOne() {
+        const CubicSplineKernel kernel(0.04f);
+        std::vector<float> r2;
+        for (float r = 0.0f; r < 0.045f; r += 0.000037f)
+            r2.push_back(r * r);
+        r2.push_back(0.04f * 0.04f);
+        r2.push_back(0.25f * 0.04f * 0.04f); // q = ½ exactly
+        QVERIFY(r2.size() % 4 != 0);
+        const std::size_t count = r2.size();
+        r2.resize(count + 3, 0.0f);
+        std::vector<float> values(count + 3);
+        std::vector<std::int32_t> codes(count + 3);
+        kernel.valuesAndFactorCodes(r2.data(), count, values.data(), codes.data());
+        for (std::size_t k = 0; k < count; ++k) {
+            const float oneByOne = kernel.value(std::sqrt(r2[k]));
+            QVERIFY2(
+                std::memcmp(&values[k], &oneByOne, sizeof(float)) == 0,
+                qPrintable(QString("r² = %1: %2 vs %3").arg(r2[k]).arg(values[k]).arg(oneByOne)));
+            QCOMPARE(codes[k], std::int32_t(kernel.gradientFactorCode(r2[k])));
         }
     }
 };
