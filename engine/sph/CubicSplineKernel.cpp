@@ -25,26 +25,45 @@ CubicSplineKernel::CubicSplineKernel(float supportRadius)
     inverseCodeStep_ = 1.0f / codeStep_;
 }
 
+#if defined(__SSE2__)
+namespace {
+//! value(√r2) in four lanes, each operation as in value(), in the same order.
+__m128 fourValues(__m128 distance2, float invRadius, float k) {
+    const __m128 one = _mm_set1_ps(1.0f);
+    const __m128 q = _mm_mul_ps(_mm_sqrt_ps(distance2), _mm_set1_ps(invRadius));
+    const __m128 t = _mm_sub_ps(one, q);
+    const __m128 inner = _mm_mul_ps(
+        _mm_set1_ps(k),
+        _mm_add_ps(_mm_mul_ps(_mm_mul_ps(_mm_mul_ps(_mm_set1_ps(6.0f), q), q), _mm_sub_ps(q, one)),
+                   one));
+    const __m128 outer = _mm_mul_ps(_mm_mul_ps(_mm_mul_ps(_mm_set1_ps(2.0f * k), t), t), t);
+    const __m128 isInner = _mm_cmple_ps(q, _mm_set1_ps(0.5f));
+    const __m128 piece = _mm_or_ps(_mm_and_ps(isInner, inner), _mm_andnot_ps(isInner, outer));
+    return _mm_and_ps(_mm_cmple_ps(q, one), piece);
+}
+} // namespace
+#endif
+
+void CubicSplineKernel::valuesOfSquared(const float* r2, std::size_t count, float* values) const {
+    std::size_t k = 0;
+#if defined(__SSE2__)
+    for (; k < count; k += 4)
+        _mm_storeu_ps(values + k, fourValues(_mm_loadu_ps(r2 + k), invRadius_, k_));
+#endif
+    for (; k < count; ++k)
+        values[k] = value(std::sqrt(r2[k]));
+}
+
 void CubicSplineKernel::valuesAndFactorCodes(const float* r2, std::size_t count, float* values,
                                              std::int32_t* codes) const {
     std::size_t k = 0;
 #if defined(__SSE2__)
-    // Each operation as in value() and gradientFactor(), in the same order, lane by lane.
-    const __m128 one = _mm_set1_ps(1.0f);
+    // Each operation as in gradientFactor(), in the same order, lane by lane.
     const __m128 half = _mm_set1_ps(0.5f);
     const __m128 lastPosition = _mm_set1_ps(float(kTableSize - 1));
     for (; k < count; k += 4) {
         const __m128 distance2 = _mm_loadu_ps(r2 + k);
-        const __m128 q = _mm_mul_ps(_mm_sqrt_ps(distance2), _mm_set1_ps(invRadius_));
-        const __m128 t = _mm_sub_ps(one, q);
-        const __m128 inner = _mm_mul_ps(
-            _mm_set1_ps(k_), _mm_add_ps(_mm_mul_ps(_mm_mul_ps(_mm_mul_ps(_mm_set1_ps(6.0f), q), q),
-                                                   _mm_sub_ps(q, one)),
-                                        one));
-        const __m128 outer = _mm_mul_ps(_mm_mul_ps(_mm_mul_ps(_mm_set1_ps(2.0f * k_), t), t), t);
-        const __m128 isInner = _mm_cmple_ps(q, half);
-        const __m128 piece = _mm_or_ps(_mm_and_ps(isInner, inner), _mm_andnot_ps(isInner, outer));
-        _mm_storeu_ps(values + k, _mm_and_ps(_mm_cmple_ps(q, one), piece));
+        _mm_storeu_ps(values + k, fourValues(distance2, invRadius_, k_));
 
         const __m128 position = _mm_mul_ps(distance2, _mm_set1_ps(tableScale_));
         const __m128 inTable = _mm_cmplt_ps(position, lastPosition);

@@ -67,6 +67,9 @@ public:
         return static_cast<std::uint16_t>(
             std::min(gradientFactor(r2) * inverseCodeStep_ + 0.5f, 65535.0f));
     }
+    //! values[k] = value(√r2[k]) for k < count, the same bits as one by one, four at a time on
+    //! SSE2. Reads and writes up to three entries past count.
+    void valuesOfSquared(const float* r2, std::size_t count, float* values) const;
     //! values[k] = value(√r2[k]) and codes[k] = gradientFactorCode(r2[k]) for k < count, the same
     //! bits as one by one; four at a time on SSE2, so that each pair's chain of dependent
     //! operations (root, polynomial, table, code) overlaps the next ones'. Reads and writes up to

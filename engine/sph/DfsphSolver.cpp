@@ -140,17 +140,6 @@ void DfsphSolver::pairMovingBoundary() {
         boundary_.findMovingLayerPairs(grid_, sortedPositions_, kernel_.supportRadius());
 }
 
-template <class Visit>
-void DfsphSolver::forEachWaterNeighbor(std::size_t i, Visit&& visit) const {
-    const Vec3f xi = sortedPositions_[i];
-    const std::uint32_t* list = neighbors_.neighbors(i);
-    for (std::uint32_t k = 0, n = neighbors_.count(i); k < n; ++k) {
-        const std::uint32_t j = list[k];
-        const Vec3f d = xi - sortedPositions_[j];
-        visit(j, d, d.squaredNorm());
-    }
-}
-
 namespace {
 using CodeFloats = float __attribute__((vector_size(16)));
 
@@ -481,11 +470,7 @@ void DfsphSolver::applyNonPressureForces(const ParticleSet& fluid, float dt) {
         for (std::size_t i = r.begin(); i != r.end(); ++i) {
             const Vec4f vi4 = unsmoothed_[i];
             const Vec3f vi = vi4.head<3>();
-            Vec4f towardWater = Vec4f::Zero();
-            forEachWaterNeighbor(i, [&](std::uint32_t j, const Vec3f&, float r2) {
-                towardWater +=
-                    (unsmoothed_[j] - vi4) * (kernel_.value(std::sqrt(r2)) / fluid.densities[j]);
-            });
+            const Vec4f towardWater = smoothingTowardWater(fluid, i, vi4);
             Vec3f towardWalls = Vec3f::Zero();
             Vec3f support = Vec3f::Zero();
             forEachBoundaryNeighbor(
@@ -500,6 +485,30 @@ void DfsphSolver::applyNonPressureForces(const ParticleSet& fluid, float dt) {
                 vi4 + water * towardWater + padded(walls * towardWalls + dt * (gravity + support));
         }
     });
+}
+
+Vec4f DfsphSolver::smoothingTowardWater(const ParticleSet& fluid, std::size_t i,
+                                        const Vec4f& vi) const {
+    // The kernel's values a chunk at a time (four at once on SSE2), then the sum in pair order.
+    constexpr std::uint32_t kChunk = 64;
+    std::array<float, kChunk + 3> distance2;
+    std::array<float, kChunk + 3> weights;
+    const Vec3f xi = sortedPositions_[i];
+    const std::uint32_t* list = neighbors_.neighbors(i);
+    const std::uint32_t count = neighbors_.count(i);
+    Vec4f sum = Vec4f::Zero();
+    for (std::uint32_t start = 0; start < count; start += kChunk) {
+        const std::uint32_t size = std::min(kChunk, count - start);
+        for (std::uint32_t k = 0; k < size; ++k)
+            distance2[k] = (xi - sortedPositions_[list[start + k]]).squaredNorm();
+        std::fill(distance2.begin() + size, distance2.begin() + size + 3, 0.0f);
+        kernel_.valuesOfSquared(distance2.data(), size, weights.data());
+        for (std::uint32_t k = 0; k < size; ++k) {
+            const std::uint32_t j = list[start + k];
+            sum += (unsmoothed_[j] - vi) * (weights[k] / fluid.densities[j]);
+        }
+    }
+    return sum;
 }
 
 Vec3f DfsphSolver::wallHydrostatic(const BoundaryLayer& layer, std::uint32_t b, const Vec3f& d,

@@ -117,12 +117,13 @@ private:
     //! Ψ_b W_ib (v_b − vᵢ): boundary particle b's share of the walls' XSPH for velocity vi.
     Vec3f wallSmoothing(const Vec3f& vi, const BoundaryLayer& layer, std::uint32_t b,
                         float r2) const;
+    //! Σⱼ W_ij (vⱼ − vᵢ) / ρⱼ over water particle i's neighbours, on the velocities before the
+    //! non-pressure forces: the water's XSPH sum (without its factor m).
+    Vec4f smoothingTowardWater(const ParticleSet& fluid, std::size_t i, const Vec4f& vi) const;
     //! The acceleration of water particle i from the hydrostatic part of boundary particle b's
     //! pressure, d = xᵢ − x_b.
     Vec3f wallHydrostatic(const BoundaryLayer& layer, std::uint32_t b, const Vec3f& d,
                           float r2) const;
-    template <class Visit>
-    void forEachWaterNeighbor(std::size_t i, Visit&& visit) const;
     //! Σⱼ term(j, ∇ᵢWᵢⱼ as xyz0) over water particle i's neighbours, from the factors' codes
     //! stored with the list. `term` must be linear in the gradient.
     template <class Term>

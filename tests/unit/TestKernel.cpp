@@ -100,7 +100,7 @@ private Q_SLOTS:
         }
     }
 
-    //! The batch form (four at a time on SSE2) gives the same bits as value() and
+    //! The batch forms (four at a time on SSE2) give the same bits as value() and
     //! gradientFactorCode() one by one, at every distance within the support and past it, for a
     //! count that is not a multiple of four.
     void batchValuesAndCodesMatchOneByOne() {
@@ -116,8 +116,11 @@ private Q_SLOTS:
         std::vector<float> values(count + 3);
         std::vector<std::int32_t> codes(count + 3);
         kernel.valuesAndFactorCodes(r2.data(), count, values.data(), codes.data());
+        std::vector<float> valuesAlone(count + 3);
+        kernel.valuesOfSquared(r2.data(), count, valuesAlone.data());
         for (std::size_t k = 0; k < count; ++k) {
             const float oneByOne = kernel.value(std::sqrt(r2[k]));
+            QVERIFY(std::memcmp(&valuesAlone[k], &oneByOne, sizeof(float)) == 0);
             QVERIFY2(
                 std::memcmp(&values[k], &oneByOne, sizeof(float)) == 0,
                 qPrintable(QString("r² = %1: %2 vs %3").arg(r2[k]).arg(values[k]).arg(oneByOne)));
