@@ -76,7 +76,7 @@ private:
     //! Sweeps water particle i's neighbours once: density, α, boundary sums, nearest body.
     void prepareParticle(ParticleSet& fluid, std::size_t i, NeighborList::Sink& sink);
     //! Adds the pairs of one batch of the sweep (i itself skipped) to `sums` and to the list
-    //! (docs/PERFORMANCE.md "Latency taken out of three loops").
+    //! (docs/PERFORMANCE.md "Latency taken out of the pair loops").
     void addWaterPairs(std::size_t i, const std::uint32_t* batch, std::size_t size, WaterSums& sums,
                        NeighborList::Sink& sink) const;
     //! Iterates `solve` until its average residual is at most `tolerance` (kg/m³, per second for
