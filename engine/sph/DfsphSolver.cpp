@@ -250,9 +250,9 @@ void DfsphSolver::prepareParticle(ParticleSet& fluid, std::size_t i, NeighborLis
 
 void DfsphSolver::addWaterPairs(std::size_t i, const std::uint32_t* batch, std::size_t size,
                                 WaterSums& sums, NeighborList::Sink& sink) const {
-    // Room for the kernel's four-wide writes past the count.
     std::array<std::uint32_t, kSweepBatch> indices;
     std::array<Vec3f, kSweepBatch> offsets;
+    // With room for the kernel's four-wide reads and writes past the count.
     std::array<float, kSweepBatch + 3> distance2;
     std::array<float, kSweepBatch + 3> weights;
     std::array<std::int32_t, kSweepBatch + 3> codes;

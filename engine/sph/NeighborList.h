@@ -26,11 +26,7 @@ public:
     class Sink {
     public:
         void add(std::uint32_t j) { indices_.push_back(j); }
-        void add(std::uint32_t j, Value value) {
-            indices_.push_back(j);
-            values_.push_back(value);
-        }
-        //! count pairs at once: js[k] with values[k].
+        //! count pairs with a value each: js[k] with values[k].
         void add(const std::uint32_t* js, const Value* values, std::size_t count) {
             indices_.insert(indices_.end(), js, js + count);
             values_.insert(values_.end(), values, values + count);
