@@ -64,6 +64,11 @@ private:
         double averageResidual = 0.0; //!< of the last residual pass
         bool converged = true;
     };
+    //! The averages a residual pass leaves, kg/m³ (or kg/m³/s for the divergence solve).
+    struct Residual {
+        double error = 0.0;     //!< compression left: what the solve's target bounds
+        double overshoot = 0.0; //!< expansion where a stiffness still pushes
+    };
 
     //! The sums over one water particle's water neighbours that prepareParticle() needs.
     struct WaterSums {
@@ -94,8 +99,8 @@ private:
     double divergenceResiduals();
     //! Each particle's compression over the step and the change of its stiffness (into
     //! stiffness_): the relaxed Jacobi iterate, accelerated by `chebyshevWeight` and kept at or
-    //! above zero. Returns the average error (compression, or expansion still pushed).
-    double densityResiduals(float dt, const float* densities, float chebyshevWeight);
+    //! above zero. Returns the average compression and overshoot.
+    Residual densityResiduals(float dt, const float* densities, float chebyshevWeight);
     //! The step the flow alone allows: λ Δx / |v|max within max_time_step.
     double flowTimeStep(double maxSpeed) const;
     //! The largest speed (m/s) of a dynamic body's boundary particle at the step's start,
