@@ -41,7 +41,11 @@ void BodySolveCoupling::begin(const BoundaryModel& boundary, const PositionArray
         if (body >= motionOf_.size())
             motionOf_.resize(body + 1, -1);
         const BodyContactTerms& terms = boundary.contactTerms(body);
-        if (motionOf_[body] >= 0 || !terms.dynamic)
+        // Bubbles are too light and small for the iterate to settle within the few iterations a
+        // solve takes: they move at their start velocity over the step, the one the water is
+        // solved against here, and take the water's reaction afterwards (RigidCoupling, with
+        // their added mass).
+        if (motionOf_[body] >= 0 || !terms.dynamic || terms.bubble)
             continue;
         Motion motion;
         motion.body = body;

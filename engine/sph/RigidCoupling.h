@@ -44,9 +44,10 @@ public:
         bubblesFrom_ = index;
     }
     //! Moves the bubbles with the water they carry along (docs/METHOD.md "Bubbles with DFSPH"):
-    //! (m + mₐ) dv/dt = F + m g, with mₐ half the water a bubble displaces (`restDensity`, kg/m³).
+    //! (m + mₐ) dv/dt = F + m g, with mₐ half the water a bubble displaces (`restDensity`, kg/m³),
+    //! and over each step at the velocity it began with, the one the water was solved against.
     //! For the divergence-free solver, whose step hands a bubble the water's whole reaction at
-    //! once; 0 (the default) moves them on m alone.
+    //! once; 0 (the default) moves them on m alone, with the velocity each sub-step ends with.
     void setBubbleAddedMass(double restDensity) { bubbleWaterDensity_ = restDensity; }
 
 private:
@@ -58,14 +59,22 @@ private:
                       const std::vector<Vec3d>& reactions);
     //! Rewrites each bubble's force so that the integrator's F/m + g is (F + m g) / (m + mₐ).
     void addBubblesAddedMass(const std::vector<RigidBody>& bodies);
+    //! Puts each bubble where its velocity at the step's start (`startVelocities`, from
+    //! bubblesFrom_ on) takes it from `startPositions` over `dt` s; its new velocity stays, for
+    //! the next step.
+    void moveBubblesAsSolved(std::vector<RigidBody>& bodies,
+                             const std::vector<Vec3d>& startPositions,
+                             const std::vector<Vec3d>& startVelocities, double dt) const;
 
     Vec3d gravity_;
     RigidContactSolver contacts_;
     std::size_t bubblesFrom_ = SIZE_MAX;
     double bubbleWaterDensity_ = 0.0; //!< kg/m³; 0: the bubbles move on their own mass
 
-    std::vector<Vec3d> forces_;  //!< N, the water's force on each body this step
-    std::vector<Vec3d> torques_; //!< N·m, about each body's centre of mass
+    std::vector<Vec3d> forces_;                //!< N, the water's force on each body this step
+    std::vector<Vec3d> torques_;               //!< N·m, about each body's centre of mass
+    std::vector<Vec3d> bubbleStartPositions_;  //!< m, of this step's bubbles, from bubblesFrom_
+    std::vector<Vec3d> bubbleStartVelocities_; //!< m/s
 };
 
 } // namespace airtrap
