@@ -1,5 +1,6 @@
 #include "sph/DfsphSolver.h"
 
+#include "core/DeterministicSum.h"
 #include "core/ParallelMax.h"
 #include "sph/BoundaryNeighbors.h"
 #include "sph/CellSort.h"
@@ -81,34 +82,7 @@ constexpr double kChebyshevRestartGrowth = 2.0;
 //! otherwise set the step of the whole tank (docs/METHOD.md "Bodies and the step").
 constexpr double kBodyCflFactor = 0.05;
 
-//! Σ f(i) over [0, n), split and added in the same order on any number of threads.
-template <class F>
-double deterministicSum(std::size_t n, F&& f) {
-    return tbb::parallel_deterministic_reduce(
-        Range(0, n, kSolveSumGrain), 0.0,
-        [&](const Range& r, double sum) {
-            for (std::size_t i = r.begin(); i != r.end(); ++i)
-                sum += static_cast<double>(f(i));
-            return sum;
-        },
-        [](double a, double b) { return a + b; });
-}
-
-using Vec2f = Eigen::Vector2f;
 using Vec2d = Eigen::Vector2d;
-
-//! Σ f(i) over [0, n) of a pair of values, as deterministicSum().
-template <class F>
-Vec2d deterministicSums(std::size_t n, F&& f) {
-    return tbb::parallel_deterministic_reduce(
-        Range(0, n, kSolveSumGrain), Vec2d(Vec2d::Zero()),
-        [&](const Range& r, Vec2d sum) {
-            for (std::size_t i = r.begin(); i != r.end(); ++i)
-                sum += f(i).template cast<double>();
-            return sum;
-        },
-        [](const Vec2d& a, const Vec2d& b) { return Vec2d(a + b); });
-}
 
 struct Fastest {
     double speed = 0.0;
@@ -357,14 +331,14 @@ void DfsphSolver::storeDensityRates(bool interiorOnly) {
 double DfsphSolver::divergenceResiduals() {
     const std::size_t n = velocities_.size();
     storeDensityRates(true);
-    const double sum = deterministicSum(n, [&](std::size_t i) {
+    const double sum = deterministicSum(n, kSolveSumGrain, 0.0, [&](std::size_t i) {
         if (!interior_[i])
-            return 0.0f;
+            return 0.0;
         // Compression only: expansion is the free surface's, not an error, and water does not
         // pull.
         const float rate = std::max(stiffness_[i], 0.0f);
         stiffness_[i] = rate * factors_[i];
-        return rate;
+        return double(rate);
     });
     return n > 0 ? sum / double(n) : 0.0;
 }
@@ -374,23 +348,24 @@ DfsphSolver::Residual DfsphSolver::densityResiduals(float dt, const float* densi
     const std::size_t n = velocities_.size();
     const float restDensity = static_cast<float>(settings_.restDensity);
     storeDensityRates(false);
-    const Vec2d sums = deterministicSums(n, [&](std::size_t i) {
-        const float compression = densities[i] + dt * stiffness_[i] - restDensity;
-        const float current = densityTotal_[i];
-        // Water does not pull: the stiffness stays at or above zero (a complementarity problem,
-        // solved by projecting each iterate).
-        const float jacobi =
-            std::max(current + kDensityRelaxation * compression * factors_[i] / dt, 0.0f);
-        const float previous = previousDensityTotal_[i];
-        const float next = std::max(chebyshevWeight * (jacobi - previous) + previous, 0.0f);
-        previousDensityTotal_[i] = current;
-        stiffness_[i] = next - current;
-        // Compression left, or expansion where the water still pushes (an overshoot); expansion
-        // with no stiffness is the free surface's.
-        if (compression > 0.0f)
-            return Vec2f(compression, 0.0f);
-        return Vec2f(0.0f, current > 0.0f ? -compression : 0.0f);
-    });
+    const Vec2d sums =
+        deterministicSum(n, kSolveSumGrain, Vec2d(Vec2d::Zero()), [&](std::size_t i) {
+            const float compression = densities[i] + dt * stiffness_[i] - restDensity;
+            const float current = densityTotal_[i];
+            // Water does not pull: the stiffness stays at or above zero (a complementarity problem,
+            // solved by projecting each iterate).
+            const float jacobi =
+                std::max(current + kDensityRelaxation * compression * factors_[i] / dt, 0.0f);
+            const float previous = previousDensityTotal_[i];
+            const float next = std::max(chebyshevWeight * (jacobi - previous) + previous, 0.0f);
+            previousDensityTotal_[i] = current;
+            stiffness_[i] = next - current;
+            // Compression left, or expansion where the water still pushes (an overshoot); expansion
+            // with no stiffness is the free surface's.
+            if (compression > 0.0f)
+                return Vec2d(compression, 0.0);
+            return Vec2d(0.0, current > 0.0f ? -compression : 0.0f);
+        });
     if (n == 0)
         return {};
     return {sums.x() / double(n), sums.y() / double(n)};
