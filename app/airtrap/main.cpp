@@ -11,6 +11,7 @@
 #include <QRegularExpression>
 #include <QSurfaceFormat>
 #include <QTimer>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 
@@ -192,6 +193,9 @@ int takeScreenshot(airtrap::MainWindow& window, const airtrap::ScreenshotRequest
 } // namespace
 
 int main(int argc, char* argv[]) {
+    // As in airtrap-cli: past a file-size limit a write fails with EFBIG, reported like a full
+    // disk, instead of the kernel killing the editor mid-write.
+    std::signal(SIGXFSZ, SIG_IGN);
     // Before QApplication: the default format decides how Qt sets up its shared OpenGL contexts,
     // and a core-profile viewport needs them to be core profile too.
     QSurfaceFormat::setDefaultFormat(airtrap::ViewportWidget::surfaceFormat());

@@ -7,6 +7,7 @@
 #include "ValidateCommand.h"
 #include "core/Error.h"
 
+#include <csignal>
 #include <iostream>
 #include <sstream>
 
@@ -75,6 +76,10 @@ ExitCode CliApp::runChosen() {
 }
 
 int CliApp::run(int argc, char** argv) {
+    // Past a file-size limit (ulimit -f) the kernel's default is to kill the process, leaving
+    // temporary files and a manifest that still says "baking"; ignored, the write fails with
+    // EFBIG and is reported and cleaned up like a full disk.
+    std::signal(SIGXFSZ, SIG_IGN);
     if (const std::optional<ExitCode> done = parse(argc, argv))
         return static_cast<int>(*done);
     try {

@@ -1,7 +1,9 @@
 #include "cache/FrameCache.h"
 
+#include "cache/FrameValueCheck.h"
 #include "core/AtomicFile.h"
 #include "core/Error.h"
+#include "scene/SceneJson.h"
 
 #include <cerrno>
 #include <cmath>
@@ -116,15 +118,33 @@ void checkAgainstEntry(const std::vector<std::uint8_t>& bytes, const CacheFrameE
                                " bytes, CRC-32 " + hex32(crc) + ")");
 }
 
+//! The domain of the manifest's scene, or nothing when that scene does not read (a manifest
+//! from a newer build): its frames are then checked for finite values only.
+std::optional<Aabb> sceneDomain(const nlohmann::json& scene) {
+    try {
+        return sceneFromJson(scene, CacheManifest::kFileName).domain();
+    } catch (const Error&) {
+        return std::nullopt;
+    }
+}
+
+//! How far outside the domain a frame may hold water: the simulation removes water beyond one
+//! support radius at the start of every step, and no step carries it further than a fraction of
+//! the domain, so a whole domain's size off is not something a bake wrote.
+double domainMargin(const Aabb& domain) {
+    return domain.size().maxCoeff();
+}
+
 } // namespace
 
 FrameCache::FrameCache(std::string dir, CacheManifest manifest)
-    : dir_(std::move(dir)), manifest_(std::move(manifest)) {}
+    : dir_(std::move(dir)), manifest_(std::move(manifest)), domain_(sceneDomain(manifest_.scene)) {}
 
 FrameCache::FrameCache(FrameCache&& other) noexcept {
     const std::lock_guard lock(other.mutex_);
     dir_ = std::move(other.dir_);
     manifest_ = std::move(other.manifest_);
+    domain_ = other.domain_;
 }
 
 FrameCache& FrameCache::operator=(FrameCache&& other) noexcept {
@@ -132,6 +152,7 @@ FrameCache& FrameCache::operator=(FrameCache&& other) noexcept {
         const std::scoped_lock lock(mutex_, other.mutex_);
         dir_ = std::move(other.dir_);
         manifest_ = std::move(other.manifest_);
+        domain_ = other.domain_;
     }
     return *this;
 }
@@ -234,6 +255,9 @@ FrameData FrameCache::readFrame(int frame) const {
     if (data.state.frame != frame)
         corruptCache(path, "holds frame " + std::to_string(data.state.frame) + ", expected frame " +
                                std::to_string(frame));
+    const std::optional<Aabb> domain = sceneDomainSnapshot();
+    if (domain)
+        checkFrameLiesInDomain(data, *domain, domainMargin(*domain), path);
     return data;
 }
 
@@ -258,8 +282,15 @@ CacheManifest FrameCache::manifestSnapshot() const {
 
 void FrameCache::reload() {
     CacheManifest fresh = CacheManifest::read(manifestPath());
+    std::optional<Aabb> domain = sceneDomain(fresh.scene);
     const std::lock_guard lock(mutex_);
     manifest_ = std::move(fresh);
+    domain_ = domain;
+}
+
+std::optional<Aabb> FrameCache::sceneDomainSnapshot() const {
+    const std::lock_guard lock(mutex_);
+    return domain_;
 }
 
 std::string FrameCache::manifestPath() const {
@@ -287,6 +318,7 @@ void FrameCache::replaceScene(const nlohmann::json& sceneJson, const std::string
         m.scene = sceneJson;
         m.parameterHash = parameterHash;
     });
+    domain_ = sceneDomain(sceneJson);
 }
 
 int FrameCache::lastGoodFrame(std::vector<std::string>* problems) const {

@@ -14,6 +14,7 @@
 // just dropped (truncateAfter) gets CacheCorrupt and should reload() before reporting it.
 #include "cache/CacheManifest.h"
 #include "cache/FrameFile.h"
+#include "core/Math.h"
 
 #include <mutex>
 #include <optional>
@@ -91,6 +92,7 @@ public:
 private:
     FrameCache(std::string dir, CacheManifest manifest);
     CacheFrameEntry entryOf(int frame) const;
+    std::optional<Aabb> sceneDomainSnapshot() const;
     //! Applies `change` to a copy of the manifest, writes it, and only then adopts it, so memory
     //! and disk agree even when the write fails. Call with mutex_ held.
     template <typename Change>
@@ -98,6 +100,8 @@ private:
 
     std::string dir_;
     CacheManifest manifest_;
+    //! The scene's domain, against which every frame read is checked (FrameValueCheck).
+    std::optional<Aabb> domain_;
     mutable std::mutex mutex_;
 };
 

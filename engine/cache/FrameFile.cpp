@@ -5,6 +5,7 @@
 #include "cache/BubbleSurroundingsChunk.h"
 #include "cache/ByteReader.h"
 #include "cache/ByteWriter.h"
+#include "cache/FrameValueCheck.h"
 #include "cache/PressureSolveChunk.h"
 #include "cache/RigidBodyRecord.h"
 #include "core/Error.h"
@@ -430,6 +431,7 @@ FrameData decodeFrame(const std::vector<std::uint8_t>& bytes, const std::string&
     checkPayload(bytes, header, pathForMessages);
     FrameData frame;
     readChunks(splitChunks(bytes, pathForMessages), frame, pathForMessages);
+    checkFrameValuesAreFinite(frame, pathForMessages);
     if (frame.state.frame != header.frame)
         corruptFrame(pathForMessages, "header says frame " + std::to_string(header.frame) +
                                           ", data says frame " + std::to_string(frame.state.frame));

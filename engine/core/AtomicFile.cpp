@@ -132,6 +132,9 @@ std::string AtomicFile::errorMessage(const std::string& action, const std::strin
     case EDQUOT:
         hint = "disk full";
         break;
+    case EFBIG:
+        hint = "file-size limit reached (ulimit -f)";
+        break;
     case EACCES:
     case EPERM:
         hint = "permission denied";

@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <exception>
+#include <mutex>
 #include <tbb/parallel_for.h>
 
 namespace airtrap {
@@ -83,15 +85,30 @@ PostReport PostStage::run(const std::vector<int>& frames, Interrupter& interrupt
     interrupter.start("post");
     std::atomic<int> done{0};
     std::mutex progressMutex;
+    // A frame that fails (a full disk) stops the frames not yet begun; those under way finish.
+    // Its error must not leave the loop's body: TBB would cancel the loop's task group, and with
+    // it the OpenVDB work of the frames under way, halfway through building their trees.
+    Interrupter frameStop(&interrupter);
+    std::exception_ptr firstFailure;
     tbb::parallel_for(std::size_t(0), frames.size(), [&](std::size_t i) {
-        if (interrupter.stopRequested())
+        if (frameStop.stopRequested())
             return;
-        makeFrame(frames[i], interrupter, report);
+        try {
+            makeFrame(frames[i], frameStop, report);
+        } catch (...) {
+            const std::lock_guard lock(progressMutex);
+            if (!firstFailure)
+                firstFailure = std::current_exception();
+            frameStop.requestStop();
+            return;
+        }
         const int finished = ++done;
         const std::lock_guard lock(progressMutex);
         interrupter.wasInterrupted(100.0 * finished / double(frames.size()));
     });
     interrupter.end();
+    if (firstFailure)
+        std::rethrow_exception(firstFailure);
     if (!frames.empty() && !interrupter.stopRequested())
         addSubgridBubbles(*std::max_element(frames.begin(), frames.end()), interrupter, report);
     report.stopped =

@@ -67,8 +67,7 @@ void checkSettings(double spacing, const SurfaceMeshSettings& settings) {
             throw Error(ErrorKind::InvalidInput, "free-surface mesh: " + problem);
 }
 
-using SurfaceFilter =
-    openvdb::tools::LevelSetFilter<openvdb::FloatGrid, openvdb::FloatGrid, Interrupter>;
+using SurfaceFilter = openvdb::tools::LevelSetFilter<openvdb::FloatGrid>;
 
 //! Moves the surface along its normals until it encloses `target` m³. One move by
 //! (volume − target) / area is exact for a flat surface; the few passes absorb curvature. A move
@@ -87,16 +86,18 @@ void matchVolume(SurfaceFilter& filter, double target, double maxShift) {
     }
 }
 
+bool stopRequested(const Interrupter* interrupter) {
+    return interrupter != nullptr && interrupter->stopRequested();
+}
+
 Vec3d toVec3d(const openvdb::Vec3s& p) {
     return {double(p.x()), double(p.y()), double(p.z())};
 }
 
 //! The union of one sphere of `radius` per particle as a signed distance in `grids.surface`, and
 //! the nearest particle's velocity over its band in `grids.velocity`.
-void rasterise(const ParticleSet& fluid, double radius, float halfWidth, WaterGrids& grids,
-               Interrupter* interrupter) {
-    openvdb::tools::ParticlesToLevelSet<openvdb::FloatGrid, openvdb::Vec3s, Interrupter> raster(
-        *grids.surface, interrupter);
+void rasterise(const ParticleSet& fluid, double radius, float halfWidth, WaterGrids& grids) {
+    openvdb::tools::ParticlesToLevelSet<openvdb::FloatGrid, openvdb::Vec3s> raster(*grids.surface);
     raster.rasterizeSpheres(ParticleList(fluid), radius);
     raster.finalize(true);
     grids.velocity = raster.attributeGrid();
@@ -107,9 +108,8 @@ void rasterise(const ParticleSet& fluid, double radius, float halfWidth, WaterGr
 }
 
 //! Flattens the spheres' bumps, then gives back the volume the smoothing took.
-void smoothKeepingVolume(openvdb::FloatGrid& surface, int passes, double volume, double maxShift,
-                         Interrupter* interrupter) {
-    SurfaceFilter filter(surface, interrupter);
+void smoothKeepingVolume(openvdb::FloatGrid& surface, int passes, double volume, double maxShift) {
+    SurfaceFilter filter(surface);
     // One renormalisation sweep per filter pass instead of three: the passes are small moves,
     // and the sweeps were two thirds of the stage's time.
     filter.setNormCount(1);
@@ -192,14 +192,20 @@ WaterVolume WaterVolume::build(const ParticleSet& fluid, double spacing,
         // keeps the smoothing's stencil at the wall symmetric.
         const ParticleSet rasterised =
             walls ? withMirrorImages(fluid, *walls, radius + voxel) : fluid;
-        rasterise(rasterised, radius, halfWidth, *grids, interrupter);
+        // OpenVDB's tools are not handed the interrupter: an interrupted tool cancels the TBB
+        // task group it runs in, and when that is a caller's parallel loop (post makes frames
+        // side by side) it cancels the other frames' tools halfway, whose half-built trees then
+        // crashed the process. The stop is checked between the stages instead.
+        rasterise(rasterised, radius, halfWidth, *grids);
+        if (stopRequested(interrupter))
+            return {};
         // The images are water too until the clip: their volume is matched with the rest.
         smoothKeepingVolume(*grids->surface, settings.smoothing, double(rasterised.size()) * cell,
-                            radius, interrupter);
+                            radius);
         if (walls)
             clipToWalls(*grids->surface, *walls, halfWidth);
     }
-    if (interrupter != nullptr && interrupter->stopRequested())
+    if (stopRequested(interrupter))
         return {};
     grids->velocity->setName("vel");
     grids->velocity->setVectorType(openvdb::VEC_CONTRAVARIANT_RELATIVE);

@@ -415,6 +415,32 @@ private Q_SLOTS:
         QCOMPARE(framesOf(cache_), oneTo(200));
     }
 
+    void ctrlCStopsPostOnTwoThreadsCleanly() {
+        const std::string scene = writeScene("long.json", tinySceneText(40));
+        QCOMPARE_EXIT(runCli(args({"bake", scene, "--out", cache_, "-q"})), 0);
+        for (int run = 0; run < 3; ++run) {
+            fs::remove_all(cache_ + "/post");
+            QProcess process;
+            process.setReadChannel(QProcess::StandardError);
+            process.start(cliPath(), args({"post", cache_, "--threads", "2"}));
+            QVERIFY(process.waitForStarted());
+            QByteArray err;
+            // Stopped while frames are being made side by side.
+            while (!err.contains("post: 2 of 40") && process.waitForReadyRead(60000))
+                err += process.readAllStandardError();
+            QVERIFY2(err.contains("post: 2 of 40"), err.constData());
+            ::kill(pid_t(process.processId()), SIGINT);
+            QVERIFY(process.waitForFinished(60000));
+            err += process.readAllStandardError();
+            QCOMPARE(process.exitStatus(), QProcess::NormalExit);
+            QVERIFY2(process.exitCode() == 130, err.constData());
+            QVERIFY2(err.contains("run post again to finish"), err.constData());
+        }
+        const CliResult again = runCli(args({"post", cache_, "--threads", "2"}));
+        QCOMPARE_EXIT(again, 0);
+        QVERIFY_CONTAINS(again.out, "already current");
+    }
+
     void outUnderAFileIsAnIoError() {
         writeText(path("plain"), "not a folder");
         const std::string out = path("plain") + "/cache";
@@ -430,8 +456,10 @@ private Q_SLOTS:
         const auto limit = rlim_t(fs::file_size(path("reference") + "/frame_0004.atf") + 64);
         QVERIFY(fs::file_size(path("reference") + "/manifest.json") < limit);
         const std::string scene = writeScene("long.json", tinySceneText(200));
+        // airtrap-cli itself must ignore SIGXFSZ (EFBIG instead of death): the child starts with
+        // the default action.
         const CliResult result = runCli(args({"bake", scene, "--out", cache_}), [limit] {
-            std::signal(SIGXFSZ, SIG_IGN); // EFBIG instead of death
+            std::signal(SIGXFSZ, SIG_DFL);
             const rlimit small{limit, limit};
             ::setrlimit(RLIMIT_FSIZE, &small);
         });
@@ -446,6 +474,30 @@ private Q_SLOTS:
             QVERIFY2(entry.path().extension() != ".tmp", entry.path().c_str());
         QCOMPARE_EXIT(runCli(args({"bake", scene, "--out", cache_, "--resume", "-q"})), 0);
         QCOMPARE(framesOf(cache_), oneTo(200));
+    }
+
+    void postStopsAtAFileSizeLimitWithoutCrashing() {
+        bake(cache_);
+        QCOMPARE_EXIT(runCli(args({"post", cache_, "--frames", "1"})), 0);
+        // Below one frame's results: every frame's write fails while the other thread is still
+        // building its surface.
+        const auto limit = rlim_t(fs::file_size(cache_ + "/post/water_0001.atm") / 2);
+        fs::remove_all(cache_ + "/post");
+        for (const int threads : {1, 2}) {
+            const CliResult result =
+                runCli(args({"post", cache_, "--threads", std::to_string(threads)}), [limit] {
+                    std::signal(SIGXFSZ, SIG_DFL);
+                    const rlimit small{limit, limit};
+                    ::setrlimit(RLIMIT_FSIZE, &small);
+                });
+            QCOMPARE_EXIT(result, 4);
+            QVERIFY_CONTAINS(result.err, "file-size limit reached");
+            for (const auto& entry : fs::recursive_directory_iterator(cache_))
+                QVERIFY2(entry.path().extension() != ".tmp", entry.path().c_str());
+        }
+        const CliResult again = runCli(args({"post", cache_, "--threads", "2"}));
+        QCOMPARE_EXIT(again, 0);
+        QVERIFY_CONTAINS(again.out, "post: 4 frame(s) made");
     }
 
     void blowUpExitsFiveKeepingTheGoodFrames() {
@@ -604,6 +656,43 @@ private Q_SLOTS:
         QCOMPARE_EXIT(fewer, 0);
         QVERIFY_CONTAINS(fewer.out, "post: 0 frame(s) made, 4 already current");
         QVERIFY_CONTAINS(fewer.out, "sub-grid bubbles: 4 frame(s) made; 0 in frame 4");
+    }
+
+    void framesWithImpossibleValuesAreRefusedByEveryReader() {
+        bake(cache_);
+        // Written through the cache, so that every checksum holds and only the values are wrong.
+        FrameCache cache = FrameCache::open(cache_);
+        FrameData notANumber = cache.readFrame(2);
+        notANumber.state.fluid.positions[5].y() = std::numeric_limits<float>::quiet_NaN();
+        cache.writeFrame(notANumber.state, notANumber.stats);
+        FrameData faraway = cache.readFrame(3);
+        faraway.state.fluid.positions[7].x() = 1e30f;
+        cache.writeFrame(faraway.state, faraway.stats);
+
+        const std::string frame2 = cache_ + "/frame_0002.atf";
+        const std::string frame3 = cache_ + "/frame_0003.atf";
+        const CliResult info = runCli(args({"info", cache_, "--frame", "2"}));
+        QCOMPARE_EXIT(info, 3);
+        QVERIFY_CONTAINS(info.err, frame2 +
+                                       ": attribute 'positions' of particle 5 (component 1) is "
+                                       "nan, expected a finite number");
+        const CliResult far = runCli(args({"info", cache_, "--frame", "3"}));
+        QCOMPARE_EXIT(far, 3);
+        QVERIFY_CONTAINS(far.err, frame3 + ": particle 7 at (1e+30, ");
+        QVERIFY_CONTAINS(far.err, "lies outside the scene's domain, expected within");
+        const CliResult ply =
+            runCli(args({"export", cache_, "--format", "ply", "--out", path("ply")}));
+        QCOMPARE_EXIT(ply, 3);
+        QVERIFY_CONTAINS(ply.err, frame2);
+        QVERIFY_CONTAINS(ply.err, frame3);
+        for (const int threads : {1, 2}) {
+            const CliResult post =
+                runCli(args({"post", cache_, "--threads", std::to_string(threads)}));
+            QCOMPARE_EXIT(post, 3);
+            QVERIFY_CONTAINS(post.err, frame2);
+            QVERIFY_CONTAINS(post.err, frame3);
+            QVERIFY(fs::exists(cache_ + "/post/water_0004.atm"));
+        }
     }
 
     void aDamagedPostResultIsNamed() {
