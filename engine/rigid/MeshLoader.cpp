@@ -88,9 +88,12 @@ TriangleMesh MeshLoader::readTriangles(const std::string& path) {
     std::error_code error;
     if (!std::filesystem::exists(path, error))
         refuse(path, "no such file");
+    // A FIFO or a device would have assimp wait for data forever (or read without end), and a
+    // folder is no mesh: only a regular file (or a link to one) is read.
+    if (!std::filesystem::is_regular_file(path, error))
+        refuse(path, "not a regular file (a folder, FIFO or device), expected a mesh file");
     // assimp calls an empty file unreadable; to the user it is a mesh without triangles.
-    if (std::filesystem::is_regular_file(path, error) &&
-        std::filesystem::file_size(path, error) == 0)
+    if (std::filesystem::file_size(path, error) == 0)
         refuse(path, "contains no triangles");
 
     Assimp::Importer importer;

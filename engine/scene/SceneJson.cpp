@@ -122,6 +122,28 @@ std::string parseErrorMessage(const Json::parse_error& error, const std::string&
     return sourceName + ": malformed JSON: " + what;
 }
 
+//! "<file>: malformed JSON at line 4, column 17: the number 1e999 is too large for a double …"
+//! out of nlohmann's "[json.exception.out_of_range.406] number overflow parsing '1e999'", which
+//! has no position: the number is found in the text.
+std::string overflowMessage(const Json::out_of_range& error, const std::string& text,
+                            const std::string& sourceName) {
+    static const std::regex quoted("'([^']+)'");
+    std::smatch match;
+    const std::string what = error.what();
+    if (!std::regex_search(what, match, quoted))
+        return sourceName + ": malformed JSON: " + what;
+    const std::string number = match[1].str();
+    std::string where;
+    if (const std::size_t at = text.find(number); at != std::string::npos) {
+        const std::size_t lineStart = text.rfind('\n', at);
+        const auto line = 1 + std::count(text.begin(), text.begin() + std::ptrdiff_t(at), '\n');
+        const std::size_t column = at - (lineStart == std::string::npos ? 0 : lineStart + 1) + 1;
+        where = " at line " + std::to_string(line) + ", column " + std::to_string(column);
+    }
+    return sourceName + ": malformed JSON" + where + ": the number " + number +
+           " is too large for a double, expected a magnitude below 1.8e308";
+}
+
 template <class JsonType>
 JsonType sectionObject(const SchemaSection& section, const Scene& scene, std::size_t element) {
     JsonType object = JsonType::object();
@@ -204,6 +226,8 @@ Scene sceneFromText(const std::string& text, const std::string& sourceName) {
         json = Json::parse(text);
     } catch (const Json::parse_error& error) {
         throw Error(ErrorKind::InvalidScene, parseErrorMessage(error, sourceName));
+    } catch (const Json::out_of_range& error) {
+        throw Error(ErrorKind::InvalidScene, overflowMessage(error, text, sourceName));
     }
     return sceneFromJson(json, sourceName);
 }

@@ -404,7 +404,9 @@ std::vector<std::string> SceneValidator::ruleDescriptions() {
             "budgets).",
         "Bodies have different names; boxes, spheres and cylinders are at least "
         "`particle_spacing` in every size; a mesh body names a closed, readable mesh file "
-        "(relative to the scene file); every body lies inside the domain.",
+        "(relative to the scene file; a regular file, not a folder, FIFO or device) that, scaled "
+        "by `mesh_scale`, is no wider than the domain's diagonal (checked before the mesh is "
+        "sampled); every body lies inside the domain.",
         "Every keyframe names a kinematic body, and no two keyframes of a body share a time.",
         "`bubbles.approach_restitution` is at most `bubbles.overlap_restitution` (ε₁ ≤ ε₂ ≤ 0); "
         "with bubbles enabled, `bubbles.max_rise_speed` is at most `solver.max_speed`.",

@@ -8,6 +8,7 @@
 #include "scene/ParameterCodec.h"
 #include "sph/BoundaryVolumes.h"
 
+#include <cstdio>
 #include <filesystem>
 
 namespace airtrap {
@@ -31,6 +32,13 @@ std::string bodyLabel(const Scene& scene, const RigidBodySettings& body) {
         ++index;
     return (scene.sourcePath.empty() ? std::string("scene") : scene.sourcePath) + ": bodies[" +
            std::to_string(index) + "] (" + ParameterCodec::formatValue(body.name) + ")";
+}
+
+//! A length in metres to the centimetre, for messages.
+std::string centimetres(double metres) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.2f", metres);
+    return text;
 }
 
 //! Moves every particle `distance` along its normal.
@@ -65,11 +73,32 @@ TriangleMesh BodyBuilder::loadMesh(const Scene& scene, const RigidBodySettings& 
     if (body.mesh.empty())
         throw Error(ErrorKind::InvalidInput,
                     bodyLabel(scene, body) + ".mesh is empty; shape \"mesh\" needs a mesh file");
+    TriangleMesh mesh;
     try {
-        return MeshLoader::load(meshPath(scene, body), body.meshScale);
+        mesh = MeshLoader::load(meshPath(scene, body), body.meshScale);
     } catch (const Error& error) {
         throw Error(ErrorKind::InvalidInput, bodyLabel(scene, body) + ".mesh: " + error.what());
     }
+    checkFitsTheDomain(scene, body, mesh);
+    return mesh;
+}
+
+void BodyBuilder::checkFitsTheDomain(const Scene& scene, const RigidBodySettings& body,
+                                     const TriangleMesh& mesh) {
+    // The signed distance field and the boundary sampling that follow cost memory and time as
+    // the body's size over the spacing, cubed: a mesh scaled far beyond the tank ran out of
+    // memory before the placement check could say so. A body wider than the domain's diagonal
+    // fits nowhere in it, whatever its pose.
+    const double across = mesh.bounds().size().norm();
+    const double diagonal = scene.domain().size().norm();
+    if (across > diagonal)
+        throw Error(ErrorKind::InvalidInput,
+                    bodyLabel(scene, body) + ".mesh_scale: the mesh scaled by " +
+                        ParameterCodec::formatNumber(body.meshScale) + " is " +
+                        centimetres(across) +
+                        " m across, larger than the domain (container plus headroom, " +
+                        centimetres(diagonal) +
+                        " m corner to corner); expected a mesh_scale that fits it inside");
 }
 
 BodyShape BodyBuilder::meshShape(const TriangleMesh& mesh, double spacing) {

@@ -25,7 +25,8 @@ public:
     //! `scene` with every mesh path made absolute, for copies of the scene kept elsewhere (the
     //! cache's manifest).
     static Scene withAbsoluteMeshPaths(Scene scene);
-    //! Reads and checks a mesh body's mesh, scaled to metres, in its shape frame.
+    //! Reads and checks a mesh body's mesh, scaled to metres, in its shape frame. A mesh too large
+    //! to fit in the domain is refused here, before any work that grows with its size.
     static TriangleMesh loadMesh(const Scene& scene, const RigidBodySettings& body);
     //! The shape of any body, for contact and overlap tests; loads the mesh of a mesh body.
     static BodyShape shapeOf(const Scene& scene, const RigidBodySettings& body, double spacing);
@@ -34,6 +35,10 @@ public:
     static BodyShape meshShape(const TriangleMesh& mesh, double spacing);
 
 private:
+    //! Throws Error(InvalidInput) naming the body's mesh_scale when the mesh is wider than the
+    //! domain's diagonal.
+    static void checkFitsTheDomain(const Scene& scene, const RigidBodySettings& body,
+                                   const TriangleMesh& mesh);
     //! Boundary particles half a spacing inside the surface (shape frame), with volumes.
     BoundaryParticles sampleBoundary(const RigidBodySettings& body, const TriangleMesh* mesh) const;
     MassProperties massOf(const RigidBodySettings& body, const TriangleMesh* mesh) const;

@@ -3,6 +3,7 @@
 // obstacle or each other at t = 0 are warned about before a bake.
 #include "sim/SceneCheck.h"
 #include "support/TestMain.h"
+#include "unit/MeshTestSupport.h"
 #include "unit/SceneTestSupport.h"
 
 #include <QTemporaryDir>
@@ -67,6 +68,22 @@ private Q_SLOTS:
         scene.bodies[0].mesh = "sheet.obj";
         const std::string message = validationError(scene);
         QVERIFY2(contains(message, path) && contains(message, "not closed"), message.c_str());
+    }
+
+    void aMeshScaledBeyondTheDomainIsRefusedBeforeItIsSampled() {
+        // 10 km across at a 5 cm spacing: sampled, its distance field alone would need
+        // terabytes. Refused from the mesh's bounds, at once.
+        QTemporaryDir folder;
+        airtrap::test::writeObj(folder.filePath("cube.obj"), airtrap::test::cube(10.0));
+        Scene scene = sceneWithABox();
+        scene.sourcePath = folder.path().toStdString() + "/scene.json";
+        scene.bodies[0].shape = "mesh";
+        scene.bodies[0].mesh = "cube.obj";
+        scene.bodies[0].meshScale = 1000.0;
+        const std::string message = validationError(scene);
+        QVERIFY2(contains(message, "bodies[0] (\"Crate\").mesh_scale: the mesh scaled by 1000 is "
+                                   "17320.51 m across, larger than the domain"),
+                 message.c_str());
     }
 
     void emptyMeshPathIsRefused() {

@@ -8,6 +8,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 #include <fstream>
+#include <sys/stat.h>
 
 using namespace airtrap;
 using namespace airtrap::test;
@@ -167,6 +168,17 @@ private Q_SLOTS:
         qInfo("%s", message.c_str());
         QVERIFY2(contains(message, pathOf("garbage.stl")), message.c_str());
         QVERIFY2(!message.empty(), "garbage loaded");
+    }
+
+    void refusesAFifoAndAFolderWithoutWaiting() {
+        // Opened for reading, a FIFO with no writer blocks forever: the loader must not open it.
+        const std::string fifo = pathOf("pipe.obj");
+        QCOMPARE(::mkfifo(fifo.c_str(), 0600), 0);
+        for (const std::string& path : {fifo, folder_.path().toStdString()}) {
+            const std::string message = loadError(path);
+            qInfo("%s", message.c_str());
+            QVERIFY2(contains(message, path + ": not a regular file"), message.c_str());
+        }
     }
 
     void loadsTheStanfordBunnyClosed() {

@@ -105,6 +105,17 @@ private Q_SLOTS:
         QVERIFY2(contains(message, path + ": malformed JSON at line 4, column"), message.c_str());
     }
 
+    void aNumberBeyondADoubleNamesFileAndLine() {
+        QTemporaryDir folder;
+        const std::string path = test::writeFile(
+            folder, "huge.json",
+            "{\n    \"format_version\": 1,\n    \"solver\": {\"max_speed\": 1e999}\n}\n");
+        const std::string message = errorMessage([&] { readSceneFile(path); });
+        QVERIFY2(contains(message, path + ": malformed JSON at line 3, column 29: the number 1e999 "
+                                          "is too large for a double"),
+                 message.c_str());
+    }
+
     void unknownKeyNamesPathAndSuggests() {
         nlohmann::json json = validJson();
         json["solver"]["particle_spacng"] = 0.02;
