@@ -6,6 +6,7 @@
 #include "core/Error.h"
 
 #include <iostream>
+#include <limits>
 
 namespace airtrap::cli {
 
@@ -13,7 +14,10 @@ void InfoCommand::addTo(CLI::App& parent) {
     app_ = parent.add_subcommand("info", "Describe one frame of a cache");
     app_->add_option("DIR", cacheDir_, "Cache folder")->required();
     app_->add_option("--frame", frame_, "Frame to describe (default: the last good frame)")
-        ->check(CLI::PositiveNumber);
+        // CLI::PositiveNumber's message prints the largest double in full (300 digits).
+        ->check(CLI::Range(1, std::numeric_limits<int>::max())
+                    .description("frame number, 1 or more")
+                    .name("FRAME"));
     app_->add_flag("--json", json_, "Print one JSON object (fields in docs/CLI.md)");
     app_->add_flag("--bubbles", bubbles_,
                    "Survey where the trapped bubbles lived in every frame: in water, floating or "

@@ -81,6 +81,14 @@ auto timed(StepPhases& phases, StepPhases::Phase phase, Work work) {
     return [&phases, phase, work] { inPhase(phases, phase, work); };
 }
 
+//! "0.0123 m/s": three significant digits, as a user reads a speed.
+std::string speedText(double metresPerSecond) {
+    std::ostringstream out;
+    out.precision(3);
+    out << metresPerSecond << " m/s";
+    return out.str();
+}
+
 std::string percent(double fraction) {
     std::ostringstream out;
     out.precision(3);
@@ -365,16 +373,25 @@ void Simulation::emitInflow(double from, double to) {
 }
 
 std::string Simulation::densityErrorCause(const StepReport& report) const {
-    const std::string speed = "the water moves at " + std::to_string(report.maxSpeed) + " m/s";
+    const std::string speed = "the water moves at " + speedText(report.maxSpeed);
     if (scene_.solver.divergenceFree())
         return speed + " at " + formatVector(report.fastestAt) + "; steps too long for it (lower " +
                SceneSchema::keyOf(&SolverSettings::flowCflFactor) + " or " +
                SceneSchema::keyOf(&SolverSettings::maxTimeStep) +
                "), or a body much lighter or heavier than water, which DFSPH does not yet hold "
                "at its large step.";
-    return speed + ", too fast for " + SceneSchema::keyOf(&SolverSettings::maxSpeed) + " = " +
-           std::to_string(scene_.solver.maxSpeed) + " m/s (raise it), or " +
-           SceneSchema::keyOf(&SolverSettings::cflFactor) + " is too large.";
+    const std::string maxSpeed = SceneSchema::keyOf(&SolverSettings::maxSpeed);
+    const std::string declared = maxSpeed + " = " + speedText(scene_.solver.maxSpeed);
+    if (report.maxSpeed > scene_.solver.maxSpeed)
+        return speed + ", faster than " + declared + " (raise it), or " +
+               SceneSchema::keyOf(&SolverSettings::cflFactor) + " is too large.";
+    // Slower than declared: the water is not too fast, its speed of sound is too low. Carrying
+    // its weight at depth H takes a compression of about g H / c² (Tait's equation); with
+    // c = 10 × max_speed that is 0.5 % when max_speed is √(2 g H).
+    return speed + ", within " + declared + ", but the speed of sound it sets (10 × " + maxSpeed +
+           " = " + speedText(10.0 * scene_.solver.maxSpeed) +
+           ") is too low to hold the water up under its own weight: raise " + maxSpeed +
+           " to at least the speed water reaches falling the pool's depth, √(2 g H).";
 }
 
 void Simulation::checkHealth(const StepReport& report, double timeToFrameEnd, int frame,

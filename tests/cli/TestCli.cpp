@@ -512,6 +512,25 @@ private Q_SLOTS:
         QVERIFY(FrameCache::open(cache_).manifest().status.starts_with("failed"));
     }
 
+    void blowUpAtALowMaxSpeedBlamesTheSpeedOfSound() {
+        // Still water with c = 1 m/s: nothing moves fast, the equation of state is too soft to
+        // hold the pool up.
+        const CliResult result =
+            runCli(args({"bake", scene_, "--out", cache_, "--set", "solver.max_speed=0.1", "-q"}));
+        QCOMPARE_EXIT(result, 5);
+        QVERIFY_CONTAINS(result.err, "within solver.max_speed = 0.1 m/s, but the speed of sound it "
+                                     "sets (10 × solver.max_speed = 1 m/s) is too low");
+        QVERIFY(!result.err.contains("too fast"));
+    }
+
+    void frameZeroIsAUsageErrorWithAShortMessage() {
+        bake(cache_);
+        const CliResult result = runCli(args({"info", cache_, "--frame", "0"}));
+        QCOMPARE_EXIT(result, 1);
+        QVERIFY_CONTAINS(result.err, "--frame: Value 0 not in range 1 to 2147483647");
+        QVERIFY2(result.err.size() < 200, qPrintable(result.err));
+    }
+
     void exportPlyWritesOneFilePerFrame() {
         bake(cache_);
         const std::string out = path("ply");
