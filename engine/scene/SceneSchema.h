@@ -66,6 +66,13 @@ public:
                                      pathOf(*section, element, parameter->declaration.key));
     }
 
+    //! The declaration of the parameter bound to `member` (its range, unit, help), for messages
+    //! that must not restate it.
+    template <class Owner, class Field>
+    static const ParameterDeclaration& declarationOf(Field Owner::*member) {
+        return boundTo(member).second->declaration;
+    }
+
 private:
     //! The section and parameter bound to `member`. Throws std::logic_error for a field no
     //! parameter is bound to: a programming error, which TestSceneSchema's message tests catch.

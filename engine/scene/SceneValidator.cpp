@@ -70,6 +70,7 @@ public:
         checkBodyNames();
         checkKeyframes();
         checkBubbles();
+        checkStartingSpeeds();
         checkPressureSolve();
         checkSurfaceMesh();
         checkSubgridBubbles();
@@ -228,17 +229,38 @@ private:
         const double particles = volume / (spacing * spacing * spacing) + budgets;
         if (particles <= SceneValidator::kMaxParticles)
             return;
-        char text[256];
+        char text[320];
         std::snprintf(text, sizeof text,
-                      "the fluid blocks%s hold about %.1f million particles at "
-                      "%s = %s m; the limit is %.0f million. Use a spacing of "
-                      "at least %.2g m or smaller fluid blocks",
+                      "the fluid blocks%s hold about %.1f million particles at %s = %s m; the "
+                      "limit is %.0f million. %s",
                       budgets > 0.0 ? " and emitter budgets" : "", particles / 1e6,
                       key(&SolverSettings::particleSpacing).c_str(), number(spacing).c_str(),
                       SceneValidator::kMaxParticles / 1e6,
-                      std::cbrt(volume / std::max(1.0, SceneValidator::kMaxParticles - budgets)) *
-                          1.005);
+                      particleCountAdvice(volume, budgets).c_str());
         error(text);
+    }
+
+    //! What brings the count within the limit: a coarser spacing when an allowed one does,
+    //! else smaller blocks or budgets.
+    std::string particleCountAdvice(double volume, double budgets) const {
+        const double room = SceneValidator::kMaxParticles - budgets;
+        if (room <= 0.0)
+            return "The emitters' particle budgets alone exceed it: lower their " +
+                   SceneSchema::nameOf(&InflowEmitterSettings::maxParticles) + ".";
+        const double coarsest =
+            SceneSchema::declarationOf(&SolverSettings::particleSpacing).maximum;
+        // Just above the spacing that fills the room exactly, so that it fits after rounding.
+        const double needed = std::cbrt(volume / room) * 1.005;
+        char text[160];
+        if (needed > coarsest)
+            std::snprintf(text, sizeof text,
+                          "Even the coarsest spacing allowed (%s m) gives too many: make the fluid "
+                          "blocks smaller.",
+                          number(coarsest).c_str());
+        else
+            std::snprintf(text, sizeof text,
+                          "Use a spacing of at least %.2g m or smaller fluid blocks.", needed);
+        return text;
     }
 
     void checkOverlaps() {
@@ -292,11 +314,41 @@ private:
                   number(bubbles.overlapRestitution) +
                   "; approaching bubbles take at most the overlapping ones' restitution "
                   "(ε₁ ≤ ε₂ ≤ 0)");
-        if (bubbles.enabled && bubbles.maxRiseSpeed > scene_.solver.maxSpeed)
+        // With DFSPH max_speed sets nothing the bubbles depend on (it is WCSPH's speed of
+        // sound's basis).
+        if (bubbles.enabled && !scene_.solver.divergenceFree() &&
+            bubbles.maxRiseSpeed > scene_.solver.maxSpeed)
             error(key(&BubbleSettings::maxRiseSpeed) + " = " + number(bubbles.maxRiseSpeed) +
                   " m/s exceeds " + key(&SolverSettings::maxSpeed) + " = " +
                   number(scene_.solver.maxSpeed) + " m/s; raise " + key(&SolverSettings::maxSpeed) +
                   " or lower the cap");
+    }
+
+    //! WCSPH's speed of sound is 10 × max_speed: water that starts faster than max_speed
+    //! compresses beyond what that sound speed holds and the bake stops in its first frames.
+    void checkStartingSpeeds() {
+        if (scene_.solver.divergenceFree())
+            return;
+        const double limit = scene_.solver.maxSpeed;
+        const auto tooFast = [&](const std::string& what, double speed) {
+            error(what + " is " + number(speed) + " m/s, above " + key(&SolverSettings::maxSpeed) +
+                  " = " + number(limit) + " m/s, the basis of the speed of sound (WCSPH): raise " +
+                  key(&SolverSettings::maxSpeed) + " to at least " + number(speed));
+        };
+        for (std::size_t i = 0; i < scene_.fluidBlocks.size(); ++i) {
+            const FluidBlock& block = scene_.fluidBlocks[i];
+            if (const double speed = block.initialVelocity.norm(); speed > limit)
+                tooFast(blockLabel("fluid_blocks", i, block.name) + "." +
+                            name(&FluidBlock::initialVelocity) + "'s speed",
+                        speed);
+        }
+        for (std::size_t i = 0; i < scene_.emitters.size(); ++i) {
+            const InflowEmitterSettings& emitter = scene_.emitters[i];
+            if (emitter.speed > limit)
+                tooFast(blockLabel("emitters", i, emitter.name) + "." +
+                            name(&InflowEmitterSettings::speed),
+                        emitter.speed);
+        }
     }
 
     void checkPressureSolve() {
@@ -409,7 +461,9 @@ std::vector<std::string> SceneValidator::ruleDescriptions() {
         "sampled); every body lies inside the domain.",
         "Every keyframe names a kinematic body, and no two keyframes of a body share a time.",
         "`bubbles.approach_restitution` is at most `bubbles.overlap_restitution` (ε₁ ≤ ε₂ ≤ 0); "
-        "with bubbles enabled, `bubbles.max_rise_speed` is at most `solver.max_speed`.",
+        "with bubbles enabled and WCSPH, `bubbles.max_rise_speed` is at most `solver.max_speed`.",
+        "With WCSPH, no fluid block starts faster than `solver.max_speed` and no emitter emits "
+        "faster (the speed of sound is 10 × `solver.max_speed`).",
         "`surface_mesh.particle_radius` is at least 1.5 × `surface_mesh.voxel_size`.",
         "`subgrid_bubbles.min_size` is at most `subgrid_bubbles.max_size`.",
         "Warnings, which do not stop a bake: fluid blocks that overlap each other or an "

@@ -88,8 +88,35 @@ private Q_SLOTS:
         scene.solver.particleSpacing = 0.001; // 0.25 m³ → 250 million particles
         const std::string message = validationError(scene);
         QVERIFY2(contains(message, "tank.json: the fluid blocks hold about 250.0 million particles "
-                                   "at solver.particle_spacing = 0.001 m; the limit is 20 million"),
+                                   "at solver.particle_spacing = 0.001 m; the limit is 20 million. "
+                                   "Use a spacing of at least 0.0023 m"),
                  message.c_str());
+    }
+
+    void particleCountAdviceStaysWithinTheDeclaredSpacings() {
+        // 400 m of water on a side: 64 million particles even at the coarsest spacing, 1 m.
+        Scene scene = validScene();
+        scene.container.max = Vec3d(500.0, 500.0, 500.0);
+        scene.fluidBlocks[0].max = Vec3d(400.0, 400.0, 400.0);
+        scene.solver.particleSpacing = 1.0;
+        const std::string message = validationError(scene);
+        QVERIFY2(contains(message, "the limit is 20 million. Even the coarsest spacing allowed "
+                                   "(1 m) gives too many: make the fluid blocks smaller."),
+                 message.c_str());
+    }
+
+    void waterFasterThanMaxSpeedIsRefusedWithWcsphOnly() {
+        Scene scene = validScene();
+        scene.solver.maxSpeed = 2.0;
+        scene.fluidBlocks[0].initialVelocity = Vec3d(0.0, -3.0, 4.0);
+        const std::string message = validationError(scene);
+        QVERIFY2(contains(message,
+                          "fluid_blocks[0] (\"Water\").initial_velocity's speed is 5 m/s, "
+                          "above solver.max_speed = 2 m/s, the basis of the speed of sound "
+                          "(WCSPH): raise solver.max_speed to at least 5"),
+                 message.c_str());
+        scene.solver.method = "dfsph";
+        QVERIFY(SceneCheck::run(scene).ok());
     }
 
     void overlapsAreWarnings() {
