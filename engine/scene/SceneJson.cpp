@@ -8,8 +8,10 @@
 #include "scene/SceneSchema.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdint>
 #include <cstdio>
+#include <map>
 #include <regex>
 
 namespace airtrap {
@@ -122,6 +124,74 @@ std::string parseErrorMessage(const Json::parse_error& error, const std::string&
     return sourceName + ": malformed JSON: " + what;
 }
 
+//! "line 3, column 5" of the `occurrence`-th (from 1) appearance of "key": as an object key
+//! in `text`, or "" if it is not found as written (a key spelled with escapes).
+std::string keyPosition(const std::string& text, const std::string& key, int occurrence) {
+    const std::string quoted = "\"" + key + "\"";
+    int seen = 0;
+    for (std::size_t at = text.find(quoted); at != std::string::npos;
+         at = text.find(quoted, at + 1)) {
+        if (at > 0 && text[at - 1] == '\\')
+            continue; // inside a string value, escaped
+        std::size_t after = at + quoted.size();
+        while (after < text.size() && std::isspace(static_cast<unsigned char>(text[after])))
+            ++after;
+        if (after >= text.size() || text[after] != ':' || ++seen < occurrence)
+            continue;
+        const std::size_t lineStart = text.rfind('\n', at);
+        const auto line = 1 + std::count(text.begin(), text.begin() + std::ptrdiff_t(at), '\n');
+        const std::size_t column = at - (lineStart == std::string::npos ? 0 : lineStart + 1) + 1;
+        return "line " + std::to_string(line) + ", column " + std::to_string(column);
+    }
+    return {};
+}
+
+//! Watches a parse for a key that appears twice in one object. nlohmann keeps the last value
+//! silently, so a scene edited by hand could lose a setting without a word.
+class DuplicateKeyWatch {
+public:
+    Json::parser_callback_t callback() {
+        return [this](int, Json::parse_event_t event, Json& parsed) {
+            if (event == Json::parse_event_t::object_start)
+                objects_.emplace_back();
+            else if (event == Json::parse_event_t::object_end && !objects_.empty())
+                objects_.pop_back();
+            else if (event == Json::parse_event_t::key)
+                noteKey(parsed.get<std::string>());
+            return true;
+        };
+    }
+    bool found() const { return !key_.empty(); }
+    std::string message(const std::string& text, const std::string& sourceName) const {
+        const std::string first = keyPosition(text, key_, firstOccurrence_);
+        const std::string second = keyPosition(text, key_, secondOccurrence_);
+        std::string where;
+        if (!first.empty() && !second.empty())
+            where = ", at " + first + " and " + second;
+        return sourceName + ": key \"" + key_ + "\" appears twice in the same object" + where +
+               "; expected each key once (the second would silently replace the first)";
+    }
+
+private:
+    void noteKey(const std::string& key) {
+        const int occurrence = ++occurrences_[key];
+        if (objects_.empty() || found())
+            return;
+        const auto [it, fresh] = objects_.back().emplace(key, occurrence);
+        if (!fresh) {
+            key_ = key;
+            firstOccurrence_ = it->second;
+            secondOccurrence_ = occurrence;
+        }
+    }
+
+    std::vector<std::map<std::string, int>> objects_; //!< per open object: key → occurrence
+    std::map<std::string, int> occurrences_;          //!< of each key text, in the whole file
+    std::string key_;                                 //!< the first duplicate found
+    int firstOccurrence_ = 0;
+    int secondOccurrence_ = 0;
+};
+
 //! "<file>: malformed JSON at line 4, column 17: the number 1e999 is too large for a double …"
 //! out of nlohmann's "[json.exception.out_of_range.406] number overflow parsing '1e999'", which
 //! has no position: the number is found in the text.
@@ -223,7 +293,10 @@ Scene readSceneFile(const std::string& path) {
 Scene sceneFromText(const std::string& text, const std::string& sourceName) {
     Json json;
     try {
-        json = Json::parse(text);
+        DuplicateKeyWatch duplicates;
+        json = Json::parse(text, duplicates.callback());
+        if (duplicates.found())
+            throw Error(ErrorKind::InvalidScene, duplicates.message(text, sourceName));
     } catch (const Json::parse_error& error) {
         throw Error(ErrorKind::InvalidScene, parseErrorMessage(error, sourceName));
     } catch (const Json::out_of_range& error) {

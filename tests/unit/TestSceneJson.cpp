@@ -116,6 +116,25 @@ private Q_SLOTS:
                  message.c_str());
     }
 
+    void aKeyTwiceInOneObjectIsRefusedNamingBothPlaces() {
+        QTemporaryDir folder;
+        const std::string path =
+            test::writeFile(folder, "twice.json",
+                            "{\n    \"format_version\": 1,\n"
+                            "    \"solver\": {\"max_speed\": 4,\n"
+                            "               \"max_speed\": 6},\n"
+                            "    \"name\": \"\\\"max_speed\\\": no key\"\n}\n");
+        const std::string message = errorMessage([&] { readSceneFile(path); });
+        QVERIFY2(contains(message, path + ": key \"max_speed\" appears twice in the same object, "
+                                          "at line 3, column 16 and line 4, column 16"),
+                 message.c_str());
+        // The same key in two objects is no duplicate.
+        const Scene scene = sceneFromText(
+            R"({"format_version": 1, "name": "a", "fluid_blocks": [{"name": "b"}, {"name": "c"}]})",
+            "ok.json");
+        QCOMPARE(scene.fluidBlocks.at(1).name, std::string("c"));
+    }
+
     void unknownKeyNamesPathAndSuggests() {
         nlohmann::json json = validJson();
         json["solver"]["particle_spacng"] = 0.02;

@@ -138,6 +138,20 @@ private Q_SLOTS:
                  warnings[2].c_str());
     }
 
+    void manyOverlapsAreCountedNotListed() {
+        // 100 blocks stacked on the same box: 4 950 overlapping pairs.
+        Scene scene = validScene();
+        scene.obstacles.clear();
+        scene.solver.particleSpacing = 0.05;
+        for (int k = 1; k < 100; ++k)
+            scene.fluidBlocks.push_back(scene.fluidBlocks[0]);
+        const std::vector<std::string> warnings = validateScene(scene);
+        QCOMPARE(warnings.size(), std::size_t(11));
+        QVERIFY2(contains(warnings.back(),
+                          "and 4940 more overlapping pairs of fluid blocks and obstacles"),
+                 warnings.back().c_str());
+    }
+
     void saysHowDeepABlockIsFilledWhenNotWholeSpacings() {
         Scene scene = validScene();
         scene.solver.particleSpacing = 0.02;
