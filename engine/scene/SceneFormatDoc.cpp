@@ -74,7 +74,8 @@ void writeIntro(std::ostream& out) {
         << "- Vectors are arrays `[x, y, z]`; a vector's range applies to each component.\n"
         << "- Ranges: `[a, b]` includes both ends, `(a, b]` excludes a.\n"
         << "- A missing key takes its default; an unknown key is an error (with a suggestion when "
-           "it looks like a typo).\n\n";
+           "it looks like a typo), and so is a key given twice in one object (the message names "
+           "both lines).\n\n";
 }
 
 void writeOverrides(std::ostream& out) {
