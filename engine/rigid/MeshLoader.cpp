@@ -1,13 +1,16 @@
 #include "rigid/MeshLoader.h"
 
 #include "core/Error.h"
+#include "rigid/ObjText.h"
 
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <functional>
+#include <iterator>
 #include <unordered_map>
 
 namespace airtrap {
@@ -34,6 +37,13 @@ struct PositionHash {
         return seed;
     }
 };
+
+std::string readText(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        refuse(path, "cannot open the file");
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
 
 Eigen::Affine3d toEigen(const aiMatrix4x4& m) {
     Eigen::Matrix4d matrix;
@@ -99,7 +109,14 @@ TriangleMesh MeshLoader::readTriangles(const std::string& path) {
     Assimp::Importer importer;
     const unsigned flags =
         aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType;
-    const aiScene* scene = importer.ReadFile(path, flags);
+    const aiScene* scene = nullptr;
+    std::string objText; // kept alive while assimp reads it
+    if (ObjText::isObjPath(path)) {
+        objText = ObjText::withLeadingZeros(readText(path));
+        scene = importer.ReadFileFromMemory(objText.data(), objText.size(), flags, "obj");
+    } else {
+        scene = importer.ReadFile(path, flags);
+    }
     if (scene == nullptr)
         refuse(path, std::string("cannot read the mesh: ") + importer.GetErrorString());
 

@@ -3,6 +3,7 @@
 #include "MeshTestSupport.h"
 #include "core/Error.h"
 #include "rigid/MeshLoader.h"
+#include "rigid/ObjText.h"
 #include "support/TestMain.h"
 
 #include <QTemporaryDir>
@@ -168,6 +169,19 @@ private Q_SLOTS:
         qInfo("%s", message.c_str());
         QVERIFY2(contains(message, pathOf("garbage.stl")), message.c_str());
         QVERIFY2(!message.empty(), "garbage loaded");
+    }
+
+    void readsObjNumbersWithoutALeadingZero() {
+        // Valid OBJ that assimp 5.2 misreads ("vertex index out of range") unless given zeros.
+        std::ofstream(pathOf("bare.obj")) << "# a tetrahedron .1 across\n"
+                                             "v 0 0 0\nv .1 0 0\nv 0 +.1 0\nv 0 0 .1\n"
+                                             "vn -.5 .5 .5\n"
+                                             "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+        const TriangleMesh mesh = MeshLoader::load(pathOf("bare.obj"));
+        QCOMPARE(mesh.triangleCount(), std::size_t(4));
+        QVERIFY((mesh.bounds().max - Vec3d(0.1, 0.1, 0.1)).norm() < 1e-6); // read as floats
+        QCOMPARE(ObjText::withLeadingZeros("v .1 -.2 +.3 1.5\nf 1 2 3\n# .4\nvt .5 .5"),
+                 std::string("v 0.1 -0.2 +0.3 1.5\nf 1 2 3\n# .4\nvt 0.5 0.5"));
     }
 
     void refusesAFifoAndAFolderWithoutWaiting() {
