@@ -6,6 +6,7 @@
 #include "sim/BodyBuilder.h"
 #include "sim/Simulation.h"
 
+#include <algorithm>
 #include <chrono>
 #include <memory>
 
@@ -19,14 +20,20 @@ double secondsSince(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-//! Returns the simulation positioned at the cache's last good frame (or at `firstFrame − 1` when
-//! that is asked for), or null when there is nothing to continue from.
+//! Returns the simulation positioned at the last frame before the cache's first damaged one (or
+//! at `firstFrame − 1` when that is asked for), or null when there is nothing to continue from.
+//! Every frame after a damaged one is baked again: each is the continuation of the one before.
 std::unique_ptr<Simulation> resumeFrom(FrameCache& cache, const Scene& scene, int firstFrame,
                                        const std::function<void(const std::string&)>& say) {
     std::vector<std::string> problems;
-    int from = cache.lastGoodFrame(&problems);
+    int from = cache.lastFrameBeforeDamage(&problems);
+    const std::vector<int> listed = cache.frames();
     for (const std::string& problem : problems)
-        say("skipping a damaged frame: " + problem);
+        say("damaged frame: " + problem + "; it and the " +
+            std::to_string(std::max<std::ptrdiff_t>(
+                0, std::ptrdiff_t(listed.end() -
+                                  std::upper_bound(listed.begin(), listed.end(), from + 1)))) +
+            " frame(s) after it are baked again");
     if (firstFrame > 0) {
         if (firstFrame - 1 > from)
             throw Error(ErrorKind::InvalidInput, cache.directory() + ": cannot start at frame " +

@@ -337,6 +337,29 @@ int FrameCache::lastGoodFrame(std::vector<std::string>* problems) const {
     return 0;
 }
 
+int FrameCache::lastFrameBeforeDamage(std::vector<std::string>* problems) const {
+    int intact = 0;
+    for (const int frame : frames()) {
+        if (frame != intact + 1) {
+            if (problems)
+                problems->push_back(framePath(intact + 1) + ": not listed in " +
+                                    CacheManifest::kFileName);
+            return intact;
+        }
+        try {
+            readFrame(frame);
+        } catch (const Error& error) {
+            if (error.kind() != ErrorKind::CacheCorrupt)
+                throw;
+            if (problems)
+                problems->push_back(error.what());
+            return intact;
+        }
+        intact = frame;
+    }
+    return intact;
+}
+
 std::vector<std::string> FrameCache::verify() const {
     std::vector<std::string> problems;
     for (const int frame : frames()) {

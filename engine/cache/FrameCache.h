@@ -83,6 +83,11 @@ public:
     //! way down is appended to `problems` as "<path>: <reason>". Io errors propagate: an
     //! unreadable file is not evidence of a bad frame.
     int lastGoodFrame(std::vector<std::string>* problems = nullptr) const;
+    //! The frame a resume continues from: the last of the unbroken run of intact frames from
+    //! frame 1 (0 if frame 1 is damaged or nothing is listed). Frames after the first damaged or
+    //! missing one depend on it and are baked again. The first damage found is appended to
+    //! `problems`. Reads every frame up to it; Io errors propagate.
+    int lastFrameBeforeDamage(std::vector<std::string>* problems = nullptr) const;
     //! Verifies every listed frame; returns "<path>: <reason>" per damaged one.
     std::vector<std::string> verify() const;
     //! Unlists and deletes every frame after `frame` (manifest first, then files), including

@@ -342,6 +342,7 @@ private Q_SLOTS:
         QTest::newRow("last frame deleted") << "delete";
         QTest::newRow("last frame corrupted") << "corrupt";
         QTest::newRow("restart at frame 3") << "restart";
+        QTest::newRow("interior frame corrupted") << "interior";
     }
 
     void resumeRecomputesBitIdentically() {
@@ -353,16 +354,22 @@ private Q_SLOTS:
         QStringList extra = {"--resume"};
         if (damage == "delete") {
             fs::remove(last);
-        } else if (damage == "corrupt") {
-            std::vector<std::uint8_t> bytes = readBytes(last);
+        } else if (damage == "corrupt" || damage == "interior") {
+            // An interior frame's damage was never noticed: resume saw frame 4 whole and had
+            // nothing to do. Now frame 3, which frame 4 continues, and frame 4 are baked again.
+            const std::string damaged = damage == "corrupt" ? last : cache_ + "/frame_0003.atf";
+            std::vector<std::uint8_t> bytes = readBytes(damaged);
             bytes.at(bytes.size() / 2) ^= 0x10;
-            writeBytes(last, bytes);
+            writeBytes(damaged, bytes);
         } else {
             extra = {"--frames", "3:4", "--overwrite"};
         }
         const CliResult result = runCli(args({"bake", scene_, "--out", cache_}) + extra);
         QCOMPARE_EXIT(result, 0);
-        if (damage != "restart")
+        if (damage == "interior")
+            QVERIFY_CONTAINS(result.err, "frame_0003.atf: checksum mismatch in the frame data; it "
+                                         "and the 1 frame(s) after it are baked again");
+        else if (damage != "restart")
             QVERIFY_CONTAINS(result.err, "frame_0004.atf");
         QCOMPARE(framesOf(cache_), oneTo(4));
         QVERIFY(FrameCache::open(cache_).verify().empty());

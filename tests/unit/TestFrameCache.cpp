@@ -141,6 +141,18 @@ private Q_SLOTS:
         QVERIFY_MESSAGE(found[0], "frame_0002.atf");
     }
 
+    void resumeContinuesBeforeTheFirstDamagedFrame() {
+        FrameCache cache = makeCacheWithThreeFrames();
+        QCOMPARE(cache.lastFrameBeforeDamage(), 3);
+        flipByte(cache.framePath(2), 100);
+        std::vector<std::string> problems;
+        QCOMPARE(cache.lastFrameBeforeDamage(&problems), 1);
+        QCOMPARE(problems.size(), std::size_t(1));
+        QVERIFY_MESSAGE(problems[0], "frame_0002.atf");
+        fs::remove(cache.framePath(1));
+        QCOMPARE(cache.lastFrameBeforeDamage(), 0);
+    }
+
     void corruptLastFrameSkippedByResume() {
         FrameCache cache = makeCacheWithThreeFrames();
         flipByte(cache.framePath(3), fs::file_size(cache.framePath(3)) - 1);
