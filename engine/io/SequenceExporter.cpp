@@ -86,12 +86,16 @@ void SequenceExporter::checkReady(const std::vector<int>& frames) const {
     for (const int frame : frames)
         if (!hasPostResults(manifest, frame))
             missing.push_back(frame);
-    if (!missing.empty())
-        throw Error(ErrorKind::InvalidInput,
-                    "frame(s) " + frameList(missing) + " of " + cache_.directory() +
-                        " have no current post results (water mesh, volume, sub-grid "
-                        "bubbles); run `airtrap-cli post " +
-                        cache_.directory() + "` first");
+    if (missing.empty())
+        return;
+    // Results listed but damaged are named: post makes them again.
+    std::string damaged;
+    for (const std::string& problem : store_.verify())
+        damaged += "; damaged: " + problem;
+    throw Error(ErrorKind::InvalidInput,
+                "frame(s) " + frameList(missing) + " of " + cache_.directory() +
+                    " have no current post results (water mesh, volume, sub-grid bubbles)" +
+                    damaged + "; run `airtrap-cli post " + cache_.directory() + "` first");
 }
 
 std::vector<std::string> SequenceExporter::comments(const FrameData& data) const {

@@ -1,5 +1,7 @@
 #include "post/PostStore.h"
 
+#include "cache/FrameFile.h"
+#include "core/AtomicFile.h"
 #include "core/Error.h"
 #include "post/ManifestJson.h"
 #include "post/MeshFile.h"
@@ -11,6 +13,11 @@
 namespace airtrap {
 
 namespace {
+
+std::uint32_t fileCrc32(const std::string& path) {
+    const std::vector<std::uint8_t> bytes = AtomicFile::read(path);
+    return computeCrc32(bytes.data(), bytes.size());
+}
 
 constexpr const char* kPostFormatName = "airtrap-post";
 
@@ -24,14 +31,23 @@ std::string volumeName(int frame) {
 } // namespace
 
 nlohmann::json PostFrameEntry::toJson() const {
-    return {{"frame", frame},           {"source_crc32", sourceCrc32},
-            {"water", meshName(frame)}, {"fluid", volumeName(frame)},
-            {"triangles", triangles},   {"seconds", seconds}};
+    return {{"frame", frame},
+            {"source_crc32", sourceCrc32},
+            {"water", meshName(frame)},
+            {"fluid", volumeName(frame)},
+            {"triangles", triangles},
+            {"seconds", seconds},
+            {"water_crc32", waterCrc32},
+            {"fluid_crc32", fluidCrc32}};
 }
 
 PostFrameEntry PostFrameEntry::fromJson(const nlohmann::json& json) {
-    return {json.at("frame").get<int>(), json.at("source_crc32").get<std::uint32_t>(),
-            json.at("triangles").get<std::uint64_t>(), json.at("seconds").get<double>()};
+    return {json.at("frame").get<int>(),
+            json.at("source_crc32").get<std::uint32_t>(),
+            json.at("triangles").get<std::uint64_t>(),
+            json.at("seconds").get<double>(),
+            json.value("water_crc32", std::uint32_t(0)),
+            json.value("fluid_crc32", std::uint32_t(0))};
 }
 
 PostStore::PostStore(std::string dir, ResultList<PostFrameEntry> results)
@@ -52,9 +68,48 @@ void PostStore::useSettings(const nlohmann::json& settings) {
 }
 
 bool PostStore::isCurrent(int frame, std::uint32_t sourceCrc32) const {
-    const std::lock_guard lock(mutex_);
-    const PostFrameEntry* entry = results_.find(frame);
-    return entry != nullptr && entry->sourceCrc32 == sourceCrc32;
+    PostFrameEntry entry;
+    {
+        const std::lock_guard lock(mutex_);
+        const PostFrameEntry* listed = results_.find(frame);
+        if (listed == nullptr || listed->sourceCrc32 != sourceCrc32)
+            return false;
+        entry = *listed;
+    }
+    return damageOf(entry).empty();
+}
+
+std::string PostStore::damageOf(const PostFrameEntry& entry) const {
+    const std::pair<std::string, std::uint32_t> files[] = {
+        {dir_ + "/" + meshName(entry.frame), entry.waterCrc32},
+        {dir_ + "/" + volumeName(entry.frame), entry.fluidCrc32}};
+    for (const auto& [path, listed] : files) {
+        std::vector<std::uint8_t> bytes;
+        try {
+            bytes = AtomicFile::read(path);
+        } catch (const Error&) {
+            return path + ": missing or unreadable (listed in " + manifestPath() + ")";
+        }
+        if (const std::uint32_t crc = computeCrc32(bytes.data(), bytes.size()); crc != listed)
+            return path + ": does not match " + manifestPath() +
+                   (listed == 0 ? " (listed without a checksum by an older build)"
+                                : " (checksum mismatch)");
+    }
+    return {};
+}
+
+std::vector<std::string> PostStore::verify() const {
+    std::vector<PostFrameEntry> entries;
+    {
+        const std::lock_guard lock(mutex_);
+        for (const int frame : results_.frames())
+            entries.push_back(*results_.find(frame));
+    }
+    std::vector<std::string> problems;
+    for (const PostFrameEntry& entry : entries)
+        if (std::string problem = damageOf(entry); !problem.empty())
+            problems.push_back(std::move(problem));
+    return problems;
 }
 
 bool PostStore::hasFrame(int frame) const {
@@ -70,10 +125,16 @@ std::vector<int> PostStore::frames() const {
 void PostStore::writeFrame(const PostFrameEntry& entry, const TriangleMesh& freeSurface,
                            const WaterVolume& volume) {
     createResultFolder(dir_);
-    MeshFile::write(dir_ + "/" + meshName(entry.frame), freeSurface);
-    WaterVolumeFile::write(dir_ + "/" + volumeName(entry.frame), volume, UpAxis::Y);
+    const std::string meshPath = dir_ + "/" + meshName(entry.frame);
+    const std::string volumePath = dir_ + "/" + volumeName(entry.frame);
+    MeshFile::write(meshPath, freeSurface);
+    WaterVolumeFile::write(volumePath, volume, UpAxis::Y);
+    PostFrameEntry listed = entry;
+    // Read back: the checksums of what is on disk, which is what a later run verifies.
+    listed.waterCrc32 = fileCrc32(meshPath);
+    listed.fluidCrc32 = fileCrc32(volumePath);
     const std::lock_guard lock(mutex_);
-    results_.put(entry);
+    results_.put(listed);
 }
 
 void PostStore::requireListed(int frame) const {

@@ -23,6 +23,11 @@ struct PostFrameEntry {
     std::uint32_t sourceCrc32 = 0; //!< of the cache frame it was made from
     std::uint64_t triangles = 0;   //!< of the free-surface mesh
     double seconds = 0.0;          //!< wall time it took
+    //! CRC-32 of the written mesh and volume files, so that a damaged result is made again
+    //! rather than counted current (0 in a post.json written before they were kept: such a
+    //! result is made again once).
+    std::uint32_t waterCrc32 = 0;
+    std::uint32_t fluidCrc32 = 0;
 
     nlohmann::json toJson() const;
     static PostFrameEntry fromJson(const nlohmann::json& json);
@@ -47,8 +52,12 @@ public:
     void useSettings(const nlohmann::json& settings);
     const nlohmann::json& settings() const { return results_.settings(); }
 
-    //! True when `frame` is listed and was made from the cache frame with this checksum.
+    //! True when `frame` is listed, was made from the cache frame with this checksum, and both
+    //! its files still hold what was written (their CRC-32 as listed).
     bool isCurrent(int frame, std::uint32_t sourceCrc32) const;
+    //! "<path>: <reason>" for each listed result whose file is missing or no longer matches its
+    //! listed CRC-32 (`airtrap-cli check`).
+    std::vector<std::string> verify() const;
     bool hasFrame(int frame) const;
     std::vector<int> frames() const;
 
@@ -67,6 +76,9 @@ public:
 private:
     PostStore(std::string dir, ResultList<PostFrameEntry> results);
     void requireListed(int frame) const;
+    //! "<path>: <reason>" when a file of `entry` is missing or differs from its listed CRC-32,
+    //! else "".
+    std::string damageOf(const PostFrameEntry& entry) const;
 
     std::string dir_;
     ResultList<PostFrameEntry> results_;
