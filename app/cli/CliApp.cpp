@@ -1,6 +1,7 @@
 #include "CliApp.h"
 
 #include "BakeCommand.h"
+#include "CheckCommand.h"
 #include "ExportCommand.h"
 #include "InfoCommand.h"
 #include "PostCommand.h"
@@ -25,6 +26,7 @@ CliApp::CliApp()
     commands_.push_back(std::make_unique<InfoCommand>());
     commands_.push_back(std::make_unique<ExportCommand>());
     commands_.push_back(std::make_unique<PostCommand>());
+    commands_.push_back(std::make_unique<CheckCommand>());
     for (const auto& command : commands_)
         command->addTo(app_);
 }

@@ -43,6 +43,8 @@ void PostCommand::summariseSubgrid(const SubgridReport& report) const {
 }
 
 ExitCode PostCommand::summarise(const PostReport& report, const std::string& storeDir) const {
+    for (const std::string& damage : report.replacedLists)
+        std::cerr << "note: " << damage << "; started afresh, its results are made again\n";
     for (const std::string& problem : report.damaged)
         std::cerr << "warning: " << problem << "; frame skipped\n";
     if (report.stopped) {

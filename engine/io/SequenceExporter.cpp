@@ -56,8 +56,10 @@ std::string frameList(const std::vector<int>& frames) {
 SequenceExporter::SequenceExporter(const FrameCache& cache, const Scene& scene,
                                    ExportOptions options)
     : cache_(cache), scene_(scene), options_(std::move(options)), solids_(scene),
-      bubbleMesh_(scene.bubbleMesh), store_(PostStore::open(cache.directory())),
-      subgrid_(SubgridStore::open(cache.directory())), subgridSphere_(unitIcosphere(1)) {}
+      bubbleMesh_(scene.bubbleMesh),
+      store_(PostStore::openOrEmpty(cache.directory(), postListDamage_)),
+      subgrid_(SubgridStore::openOrEmpty(cache.directory(), subgridListDamage_)),
+      subgridSphere_(unitIcosphere(1)) {}
 
 ExportFormat SequenceExporter::parseFormat(const std::string& name) {
     if (const std::optional<ExportFormat> format = exportFormatNamed(name))
@@ -90,6 +92,9 @@ void SequenceExporter::checkReady(const std::vector<int>& frames) const {
         return;
     // Results listed but damaged are named: post makes them again.
     std::string damaged;
+    for (const std::string* list : {&postListDamage_, &subgridListDamage_})
+        if (!list->empty())
+            damaged += "; damaged: " + *list;
     for (const std::string& problem : store_.verify())
         damaged += "; damaged: " + problem;
     throw Error(ErrorKind::InvalidInput,

@@ -76,6 +76,10 @@ private:
     ExportOptions options_;
     SceneSolids solids_;
     OscillatingBubbleMesh bubbleMesh_;
+    // Damaged lists read as empty, so that a PLY export, which needs neither, is not stopped by
+    // them; an OBJ or VDB export names them (checkReady()) and post replaces them.
+    std::string postListDamage_;
+    std::string subgridListDamage_;
     PostStore store_;
     SubgridStore subgrid_;
     TriangleMesh subgridSphere_; //!< unit sphere each sub-grid bubble is scaled from in OBJ

@@ -24,8 +24,8 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 } // namespace
 
 PostStage::PostStage(const FrameCache& cache, const Scene& scene)
-    : cache_(cache), scene_(scene), solids_(scene), store_(PostStore::open(cache.directory())),
-      subgrid_(cache, scene) {
+    : cache_(cache), scene_(scene), solids_(scene),
+      store_(PostStore::openOrEmpty(cache.directory(), storeDamage_)), subgrid_(cache, scene) {
     store_.useSettings(settingsOf(scene_));
 }
 
@@ -82,6 +82,10 @@ void PostStage::addSubgridBubbles(int lastFrame, Interrupter& interrupter, PostR
 PostReport PostStage::run(const std::vector<int>& frames, Interrupter& interrupter) {
     const auto start = std::chrono::steady_clock::now();
     PostReport report;
+    const std::string* const replaced[] = {&storeDamage_, &subgrid_.storeDamage()};
+    for (const std::string* damage : replaced)
+        if (!damage->empty())
+            report.replacedLists.push_back(*damage);
     interrupter.start("post");
     std::atomic<int> done{0};
     std::mutex progressMutex;

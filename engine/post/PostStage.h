@@ -26,13 +26,16 @@ struct PostReport {
     double secondsPerFrame = 0.0;     //!< mean wall time of a frame made (threads included)
     bool stopped = false;
     SubgridReport subgrid; //!< the sub-grid bubbles' pass, after the surfaces'
+    //! A damaged post.json or subgrid.json, replaced by this run: "<path>: <reason>".
+    std::vector<std::string> replacedLists;
 };
 
 class PostStage {
 public:
     //! `scene` supplies the render settings and the solids; usually the cache's own scene,
     //! perhaps with its render settings changed. Loads mesh bodies (Error(InvalidInput) when one
-    //! cannot be read) and opens the store (Error(CacheCorrupt) when post.json is damaged).
+    //! cannot be read) and opens the store; a damaged post.json is started afresh
+    //! (PostReport::replacedLists).
     PostStage(const FrameCache& cache, const Scene& scene);
 
     //! The render settings as the store records them.
@@ -55,6 +58,7 @@ private:
     const FrameCache& cache_;
     Scene scene_;
     SceneSolids solids_;
+    std::string storeDamage_; //!< why post.json was started afresh ("" when it was whole)
     PostStore store_;
     SubgridPass subgrid_;
     std::mutex reportMutex_;

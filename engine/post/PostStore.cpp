@@ -62,6 +62,12 @@ PostStore PostStore::open(const std::string& cacheDir) {
                                                            kPostFormatName, kFormatVersion));
 }
 
+PostStore PostStore::openOrEmpty(const std::string& cacheDir, std::string& damage) {
+    const std::string dir = (std::filesystem::path(cacheDir) / kFolderName).string();
+    return PostStore(dir, ResultList<PostFrameEntry>::openOrEmpty(
+                              dir + "/" + kManifestName, kPostFormatName, kFormatVersion, damage));
+}
+
 void PostStore::useSettings(const nlohmann::json& settings) {
     const std::lock_guard lock(mutex_);
     results_.useSettings(settings);

@@ -42,6 +42,9 @@ public:
     //! The store of the cache in `cacheDir`; empty (nothing listed, no folder yet) when no post
     //! run has finished a frame. A damaged post.json → Error(CacheCorrupt) naming it.
     static PostStore open(const std::string& cacheDir);
+    //! open(), or an empty store when post.json is damaged (`damage` says how): what it listed
+    //! is made again by the run that writes into it.
+    static PostStore openOrEmpty(const std::string& cacheDir, std::string& damage);
 
     PostStore(PostStore&& other) noexcept;
     PostStore(const PostStore&) = delete;

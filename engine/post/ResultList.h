@@ -36,6 +36,21 @@ public:
         return list;
     }
 
+    //! open(), or an empty list when the file is damaged (then `damage` says how): the results it
+    //! listed are made again, and the first write replaces the file. For the writers (post),
+    //! which would otherwise be stuck behind a file only they can remake.
+    static ResultList openOrEmpty(std::string path, std::string format, int version,
+                                  std::string& damage) {
+        try {
+            return open(path, format, version);
+        } catch (const Error& error) {
+            if (error.kind() != ErrorKind::CacheCorrupt)
+                throw;
+            damage = error.what();
+            return ResultList(std::move(path), std::move(format), version);
+        }
+    }
+
     //! Adopts `settings`; when they differ, every entry is unlisted, in the file too.
     void useSettings(const nlohmann::json& settings) {
         if (settings == settings_)

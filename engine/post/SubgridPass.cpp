@@ -12,7 +12,8 @@ namespace airtrap {
 
 SubgridPass::SubgridPass(const FrameCache& cache, const Scene& scene)
     : cache_(cache), scene_(scene), spawner_(scene.subgridBubbles, scene.seed),
-      advector_(scene.subgridBubbles, scene), store_(SubgridStore::open(cache.directory())) {
+      advector_(scene.subgridBubbles, scene),
+      store_(SubgridStore::openOrEmpty(cache.directory(), storeDamage_)) {
     store_.useSettings(settingsOf(scene_));
 }
 

@@ -48,6 +48,8 @@ public:
                       double seconds) const;
 
     const SubgridStore& store() const { return store_; }
+    //! Why subgrid.json was started afresh ("" when it was whole).
+    const std::string& storeDamage() const { return storeDamage_; }
 
 private:
     //! `trustStore` false remakes every frame, for when a stored one turns out damaged.
@@ -61,6 +63,7 @@ private:
     Scene scene_;
     SubgridSpawner spawner_;
     SubgridAdvector advector_;
+    std::string storeDamage_;
     SubgridStore store_;
 };
 

@@ -42,6 +42,13 @@ SubgridStore SubgridStore::open(const std::string& cacheDir) {
                                  dir + "/" + kManifestName, kSubgridFormatName, kFormatVersion));
 }
 
+SubgridStore SubgridStore::openOrEmpty(const std::string& cacheDir, std::string& damage) {
+    const std::string dir = (std::filesystem::path(cacheDir) / PostStore::kFolderName).string();
+    return SubgridStore(dir, ResultList<SubgridFrameEntry>::openOrEmpty(dir + "/" + kManifestName,
+                                                                        kSubgridFormatName,
+                                                                        kFormatVersion, damage));
+}
+
 std::uint32_t SubgridStore::chainCrc32(std::uint32_t previousChain, std::uint32_t frameCrc32) {
     const std::uint32_t both[2] = {previousChain, frameCrc32};
     return computeCrc32(both, sizeof both);

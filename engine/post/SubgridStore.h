@@ -33,6 +33,8 @@ public:
     //! The store of the cache in `cacheDir`; empty when no post run has made sub-grid bubbles. A
     //! damaged subgrid.json → Error(CacheCorrupt) naming it.
     static SubgridStore open(const std::string& cacheDir);
+    //! open(), or an empty store when subgrid.json is damaged (`damage` says how).
+    static SubgridStore openOrEmpty(const std::string& cacheDir, std::string& damage);
 
     //! Folds a cache frame's checksum into the chain of the frames before it (0 for the first).
     static std::uint32_t chainCrc32(std::uint32_t previousChain, std::uint32_t frameCrc32);

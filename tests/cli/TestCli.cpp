@@ -723,6 +723,46 @@ private Q_SLOTS:
         }
     }
 
+    void checkFindsEveryDamageAndTheWaysOnRepairIt() {
+        bake(cache_);
+        QCOMPARE_EXIT(runCli(args({"post", cache_})), 0);
+        const CliResult intact = runCli(args({"check", cache_}));
+        QCOMPARE_EXIT(intact, 0);
+        QVERIFY_CONTAINS(intact.out, "cache frames: 4 verified, 0 damaged");
+        QVERIFY_CONTAINS(intact.out, "is intact");
+
+        const auto flip = [](const std::string& file) {
+            std::vector<std::uint8_t> bytes = readBytes(file);
+            bytes.at(bytes.size() / 2) ^= 0x40;
+            writeBytes(file, bytes);
+        };
+        flip(cache_ + "/frame_0002.atf");
+        flip(cache_ + "/post/subgrid_0003.atb");
+        const std::vector<std::uint8_t> list = readBytes(cache_ + "/post/post.json");
+        writeBytes(cache_ + "/post/post.json", {list.begin(), list.begin() + 40});
+        const CliResult damaged = runCli(args({"check", cache_}));
+        QCOMPARE_EXIT(damaged, 3);
+        QVERIFY_CONTAINS(damaged.out, "damaged: " + cache_ + "/frame_0002.atf");
+        QVERIFY_CONTAINS(damaged.out, "damaged: " + cache_ + "/post/post.json");
+        QVERIFY_CONTAINS(damaged.out, "damaged: " + cache_ + "/post/subgrid_0003.atb");
+        QVERIFY_CONTAINS(damaged.out, "--resume");
+        QVERIFY_CONTAINS(damaged.out, "run `airtrap-cli post " + cache_ + "`");
+
+        // A cut-short post.json no longer stops an export that does not need it.
+        const CliResult ply =
+            runCli(args({"export", cache_, "--format", "ply", "--out", path("ply")}));
+        QCOMPARE_EXIT(ply, 3); // frame 2, damaged, is skipped and named
+        QVERIFY(fs::exists(path("ply") + "/particles_0004.ply"));
+
+        // The ways on the check names, each with its own command line.
+        QCOMPARE_EXIT(runCli(args({"bake", scene_, "--out", cache_, "--resume"})), 0);
+        const CliResult post = runCli(args({"post", cache_}));
+        QCOMPARE_EXIT(post, 0);
+        QVERIFY_CONTAINS(post.err, cache_ + "/post/post.json");
+        QVERIFY_CONTAINS(post.err, "started afresh");
+        QCOMPARE_EXIT(runCli(args({"check", cache_})), 0);
+    }
+
     void aDamagedPostResultIsNamed() {
         bake(cache_);
         QCOMPARE_EXIT(runCli(args({"post", cache_})), 0);
