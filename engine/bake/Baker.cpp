@@ -68,6 +68,8 @@ FrameCache Baker::openCache() const {
     const bool continuing = options_.resume || options_.firstFrame > 1;
     FrameCache cache = continuing && FrameCache::isCache(options_.cacheDir)
                            ? FrameCache::open(options_.cacheDir)
+                       : continuing && FrameCache::holdsFrameFiles(options_.cacheDir)
+                           ? rebuiltCache(hash)
                            : FrameCache::create(options_.cacheDir, cachedSceneJson(), hash,
                                                 scene_.frames.fps, options_.overwrite);
     if (cache.manifest().parameterHash != hash && continuing && options_.adoptEditedScene)
@@ -77,6 +79,17 @@ FrameCache Baker::openCache() const {
                     options_.cacheDir + " was baked from a different scene (parameter hash " +
                         cache.manifest().parameterHash + ", this scene " + hash +
                         "); bake into another folder or start again with --overwrite");
+    return cache;
+}
+
+FrameCache Baker::rebuiltCache(const std::string& hash) const {
+    // The frames are taken as this scene's: a frame file holds no trace of the scene it was
+    // baked from beyond its time, which rebuild() checks against this scene's frame rate.
+    std::vector<std::string> notes;
+    FrameCache cache =
+        FrameCache::rebuild(options_.cacheDir, cachedSceneJson(), hash, scene_.frames.fps, notes);
+    for (const std::string& note : notes)
+        report(note);
     return cache;
 }
 

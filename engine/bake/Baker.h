@@ -67,6 +67,8 @@ private:
     //! The scene as the cache's manifest keeps it.
     nlohmann::json cachedSceneJson() const;
     void adoptEditedScene(FrameCache& cache) const;
+    //! The cache in cacheDir, its lost manifest rebuilt from the frame files (a resume).
+    FrameCache rebuiltCache(const std::string& hash) const;
     //! The simulation at the frame to continue from; on a fresh bake, frame 1, written.
     std::unique_ptr<Simulation> startingPoint(FrameCache& cache);
     Outcome bakeFrames(Simulation& simulation, FrameCache& cache, Interrupter& interrupter,

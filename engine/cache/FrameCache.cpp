@@ -166,6 +166,13 @@ FrameCache FrameCache::create(const std::string& dir, const nlohmann::json& scen
     createFolder(folder);
     const std::vector<std::string> names = folderEntries(folder);
     if (holdsCache(names)) {
+        const bool manifestLost =
+            std::find(names.begin(), names.end(), CacheManifest::kFileName) == names.end();
+        if (!overwrite && manifestLost)
+            throw Error(ErrorKind::InvalidInput,
+                        folder + " holds frame files but no " + CacheManifest::kFileName +
+                            "; continue them with --resume (it lists them again) or start "
+                            "again with --overwrite");
         if (!overwrite)
             throw Error(ErrorKind::InvalidInput,
                         folder + " already holds an Airtrap cache; choose another folder or "
@@ -184,9 +191,61 @@ FrameCache FrameCache::create(const std::string& dir, const nlohmann::json& scen
 FrameCache FrameCache::open(const std::string& dir) {
     const std::string folder = withoutTrailingSlash(dir);
     const std::string path = folder + "/" + CacheManifest::kFileName;
-    if (::access(path.c_str(), F_OK) != 0 && errno == ENOENT)
+    if (::access(path.c_str(), F_OK) != 0 && errno == ENOENT) {
+        if (holdsFrameFiles(folder))
+            throw Error(ErrorKind::InvalidInput,
+                        "not an Airtrap cache: " + path +
+                            " missing, though the folder holds frame files; `airtrap-cli bake "
+                            "SCENE --out " +
+                            folder + " --resume` lists them again and continues the bake");
         throw Error(ErrorKind::InvalidInput, "not an Airtrap cache: " + path + " missing");
+    }
     return FrameCache(folder, CacheManifest::read(path));
+}
+
+bool FrameCache::holdsFrameFiles(const std::string& dir) {
+    std::error_code error;
+    if (!fs::is_directory(dir, error))
+        return false;
+    const std::vector<std::string> names = folderEntries(withoutTrailingSlash(dir));
+    return std::any_of(names.begin(), names.end(),
+                       [](const std::string& name) { return frameNumberOf(name) >= 0; });
+}
+
+FrameCache FrameCache::rebuild(const std::string& dir, const nlohmann::json& sceneJson,
+                               const std::string& parameterHash, double fps,
+                               std::vector<std::string>& notes) {
+    const std::string folder = withoutTrailingSlash(dir);
+    CacheManifest manifest;
+    manifest.scene = sceneJson;
+    manifest.parameterHash = parameterHash;
+    manifest.fps = fps;
+    manifest.status = "stopped";
+    for (int frame = 1;; ++frame) {
+        const std::string name = frameFileName(frame);
+        const std::string path = folder + "/" + name;
+        if (::access(path.c_str(), F_OK) != 0)
+            break;
+        const std::vector<std::uint8_t> bytes = AtomicFile::read(path);
+        try {
+            const FrameData data = decodeFrame(bytes, path);
+            // The bake lands every frame on (n − 1) / fps exactly (docs/CACHE_FORMAT.md).
+            if (data.state.frame != frame || data.state.time != double(frame - 1) / fps)
+                corruptCache(path, "holds t = " + std::to_string(data.state.time) +
+                                       " s, not frame " + std::to_string(frame) +
+                                       " of this scene at " + std::to_string(fps) + " fps");
+        } catch (const Error& error) {
+            if (error.kind() != ErrorKind::CacheCorrupt)
+                throw;
+            notes.push_back(std::string(error.what()) + "; not listed, baked again");
+            break;
+        }
+        manifest.setFrame({frame, name, bytes.size(), computeCrc32(bytes.data(), bytes.size())});
+    }
+    manifest.write(folder + "/" + CacheManifest::kFileName);
+    notes.push_back(std::string(CacheManifest::kFileName) + " was missing: rebuilt from " +
+                    std::to_string(manifest.frames.size()) + " frame file(s) that verify");
+    return FrameCache(folder, std::move(manifest));
 }
 
 bool FrameCache::isCache(const std::string& dir) {

@@ -36,6 +36,16 @@ public:
     static FrameCache open(const std::string& dir);
     //! True when `dir` contains a manifest.json (whether or not it is valid).
     static bool isCache(const std::string& dir);
+    //! True when `dir` contains frame files (frame_NNNN.atf), with or without a manifest.
+    static bool holdsFrameFiles(const std::string& dir);
+    //! A cache whose manifest.json is lost, listed again from its frame files: each that decodes
+    //! (its own checksums hold) and holds its frame's time of a bake at `fps`, in an unbroken
+    //! run from frame 1; the run ends at the first that does not. The manifest takes the given
+    //! scene, hash and fps (a resume's own) and status "stopped". What was listed, and where the
+    //! run ended, go to `notes`. A resume then verifies and continues it as any cache.
+    static FrameCache rebuild(const std::string& dir, const nlohmann::json& sceneJson,
+                              const std::string& parameterHash, double fps,
+                              std::vector<std::string>& notes);
 
     FrameCache(FrameCache&& other) noexcept;
     FrameCache& operator=(FrameCache&& other) noexcept;

@@ -343,6 +343,7 @@ private Q_SLOTS:
         QTest::newRow("last frame corrupted") << "corrupt";
         QTest::newRow("restart at frame 3") << "restart";
         QTest::newRow("interior frame corrupted") << "interior";
+        QTest::newRow("manifest and last frame lost") << "manifest";
     }
 
     void resumeRecomputesBitIdentically() {
@@ -354,6 +355,18 @@ private Q_SLOTS:
         QStringList extra = {"--resume"};
         if (damage == "delete") {
             fs::remove(last);
+        } else if (damage == "manifest") {
+            fs::remove(last);
+            fs::remove(cache_ + "/manifest.json");
+            const CliResult info = runCli(args({"info", cache_}));
+            QCOMPARE_EXIT(info, 2);
+            QVERIFY_CONTAINS(info.err, "though the folder holds frame files; `airtrap-cli bake "
+                                       "SCENE --out " +
+                                           cache_ + " --resume` lists them again");
+            const CliResult fresh = runCli(args({"bake", scene_, "--out", cache_}));
+            QCOMPARE_EXIT(fresh, 2);
+            QVERIFY_CONTAINS(fresh.err, "holds frame files but no manifest.json; continue them "
+                                        "with --resume");
         } else if (damage == "corrupt" || damage == "interior") {
             // An interior frame's damage was never noticed: resume saw frame 4 whole and had
             // nothing to do. Now frame 3, which frame 4 continues, and frame 4 are baked again.
@@ -366,7 +379,9 @@ private Q_SLOTS:
         }
         const CliResult result = runCli(args({"bake", scene_, "--out", cache_}) + extra);
         QCOMPARE_EXIT(result, 0);
-        if (damage == "interior")
+        if (damage == "manifest")
+            QVERIFY_CONTAINS(result.err, "manifest.json was missing: rebuilt from 3 frame file(s)");
+        else if (damage == "interior")
             QVERIFY_CONTAINS(result.err, "frame_0003.atf: checksum mismatch in the frame data; it "
                                          "and the 1 frame(s) after it are baked again");
         else if (damage != "restart")
