@@ -64,6 +64,10 @@ TriangleMesh MeshFile::decode(const std::vector<std::uint8_t>& bytes,
     for (Vec3d& v : mesh.vertices) {
         Vec3f p;
         std::memcpy(p.data(), in.take(3 * sizeof(float)), 3 * sizeof(float));
+        // An exporter writes what it reads: NaN would reach the renderer as "nan" in an OBJ.
+        if (!p.allFinite())
+            throw corrupt("vertex " + std::to_string(&v - mesh.vertices.data()) +
+                          " is not a finite point");
         v = p.cast<double>();
     }
     mesh.triangles.resize(triangleCount);

@@ -6,6 +6,7 @@
 #include "core/AtomicFile.h"
 #include "core/Error.h"
 
+#include <cmath>
 #include <cstring>
 
 namespace airtrap {
@@ -91,8 +92,14 @@ SubgridFrame SubgridFile::decode(const std::vector<std::uint8_t>& bytes,
     if (computeCrc32(bytes.data(), bytes.size() - 4) != stored)
         throw corrupt("checksum mismatch");
     frame.bubbles.reserve(count);
-    for (std::uint32_t i = 0; i < count; ++i)
+    for (std::uint32_t i = 0; i < count; ++i) {
         frame.bubbles.push_back(readBubble(in));
+        const SubgridBubble& bubble = frame.bubbles.back();
+        if (!bubble.position.allFinite() || !bubble.velocity.allFinite() ||
+            !std::isfinite(bubble.radius) || !(bubble.radius > 0.0) || !std::isfinite(bubble.age))
+            throw corrupt("bubble " + std::to_string(i) +
+                          " holds a value that is not a finite number (or a radius not above 0)");
+    }
     return frame;
 }
 
