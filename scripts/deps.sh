@@ -13,6 +13,9 @@ packages=(
     qt6-base-dev libqt6opengl6-dev libgl-dev
     # GUI tests without a screen: virtual X server and Mesa's software OpenGL
     xvfb xauth libgl1-mesa-dri
+    # fuzzing and sanitizer builds (scripts/fuzz.sh, test.sh --sanitize): clang with libFuzzer
+    # and the sanitizers' runtimes
+    clang-16 libclang-rt-16-dev
 )
 
 missing=()

@@ -120,7 +120,7 @@ BubbleSurroundings BubbleDynamics::measureOne(const RigidBody& body, double radi
             for (std::uint32_t s = begin; s < end; ++s) {
                 const float d2 =
                     square(px[s] - c.x()) + square(py[s] - c.y()) + square(pz[s] - c.z());
-                const float inShell = (d2 >= ambient2) & (d2 < outer2) ? 1.0f : 0.0f;
+                const float inShell = ((d2 >= ambient2) & (d2 < outer2)) ? 1.0f : 0.0f;
                 rowSum += inShell * fluid.velocities[s];
                 rowCount += inShell;
                 if (d2 < touching2 && d2 > 0.0f)

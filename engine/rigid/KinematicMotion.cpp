@@ -10,6 +10,9 @@ template <typename... Fs>
 struct Visitor : Fs... {
     using Fs::operator()...;
 };
+// Written out for clang 16, which does not deduce an aggregate's arguments by itself.
+template <typename... Fs>
+Visitor(Fs...) -> Visitor<Fs...>;
 
 } // namespace
 
