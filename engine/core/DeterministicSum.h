@@ -11,10 +11,11 @@ namespace airtrap {
 //! vector of them (several sums in one pass).
 template <class T, class F>
 T deterministicSum(std::size_t n, std::size_t grain, const T& zero, F&& f) {
-    using Range = tbb::blocked_range<std::size_t>;
+    // Not "Range": in a unity batch a .cpp's own Range alias would be shadowed (clang -Wshadow).
+    using SumRange = tbb::blocked_range<std::size_t>;
     return tbb::parallel_deterministic_reduce(
-        Range(0, n, grain), zero,
-        [&](const Range& r, T sum) {
+        SumRange(0, n, grain), zero,
+        [&](const SumRange& r, T sum) {
             for (std::size_t i = r.begin(); i != r.end(); ++i)
                 sum += f(i);
             return sum;

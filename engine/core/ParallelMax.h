@@ -10,10 +10,11 @@ namespace airtrap {
 
 template <class F>
 double parallelMax(std::size_t n, F&& f, std::size_t grain = 1024) {
-    using Range = tbb::blocked_range<std::size_t>;
+    // Not "Range": in a unity batch a .cpp's own Range alias would be shadowed (clang -Wshadow).
+    using MaxRange = tbb::blocked_range<std::size_t>;
     return tbb::parallel_reduce(
-        Range(0, n, grain), 0.0,
-        [&](const Range& r, double best) {
+        MaxRange(0, n, grain), 0.0,
+        [&](const MaxRange& r, double best) {
             for (std::size_t i = r.begin(); i != r.end(); ++i)
                 best = std::max(best, static_cast<double>(f(i)));
             return best;

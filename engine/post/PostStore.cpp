@@ -157,7 +157,18 @@ TriangleMesh PostStore::readFreeSurface(int frame) const {
 
 WaterVolume PostStore::readVolume(int frame) const {
     requireListed(frame);
-    return WaterVolumeFile::read(dir_ + "/" + volumeName(frame));
+    PostFrameEntry entry;
+    {
+        const std::lock_guard lock(mutex_);
+        entry = *results_.find(frame);
+    }
+    // Checked against its listed CRC-32 before OpenVDB sees it: OpenVDB trusts the sizes in a
+    // file, and a damaged one asked it for 140 TB (found by the sanitizer build).
+    const std::string path = dir_ + "/" + volumeName(frame);
+    if (entry.fluidCrc32 != 0 && fileCrc32(path) != entry.fluidCrc32)
+        throw Error(ErrorKind::CacheCorrupt,
+                    path + ": does not match " + manifestPath() + " (checksum mismatch)");
+    return WaterVolumeFile::read(path);
 }
 
 } // namespace airtrap

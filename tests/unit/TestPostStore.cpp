@@ -1,6 +1,7 @@
 // The post stage's store beside a cache: meshes round-trip exactly (to float), a damaged mesh
 // file is refused by name, results are current only for the cache frame they were made from,
 // other settings make every result stale, and a reopened store lists what was written.
+#include "core/AtomicFile.h"
 #include "core/Error.h"
 #include "post/MeshFile.h"
 #include "post/PostStore.h"
@@ -76,6 +77,21 @@ private Q_SLOTS:
         QCOMPARE(store.readFreeSurface(3).triangleCount(), someMesh().triangleCount());
         QVERIFY(store.readVolume(1).empty());
         QVERIFY_THROWS_EXCEPTION(Error, store.readFreeSurface(2));
+        // A damaged volume is refused by its listed CRC-32 before OpenVDB reads it, and is
+        // no longer current: post makes it again.
+        const std::string volume = dir + "/post/fluid_0001.vdb";
+        std::vector<std::uint8_t> bytes = AtomicFile::read(volume);
+        bytes.at(bytes.size() / 2) ^= 0x20;
+        AtomicFile::write(volume, bytes);
+        try {
+            store.readVolume(1);
+            QFAIL("a damaged volume was read");
+        } catch (const Error& error) {
+            QCOMPARE(error.kind(), ErrorKind::CacheCorrupt);
+            QVERIFY2(std::string(error.what()).find(volume + ": does not match") == 0,
+                     error.what());
+        }
+        QVERIFY(!store.isCurrent(1, 0x1234u));
 
         store.useSettings(settings);
         QCOMPARE(store.frames().size(), std::size_t(2));
