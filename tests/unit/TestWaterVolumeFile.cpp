@@ -133,6 +133,15 @@ private Q_SLOTS:
     }
 
     void aDamagedFileIsRefusedByName() {
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer)
+        // OpenVDB trusts the sizes in the file and asks for terabytes; without ASan that is a
+        // std::bad_alloc this reader turns into CacheCorrupt, under ASan an abort. The product
+        // never hands OpenVDB an unchecked file: PostStore checks its CRC-32 first
+        // (docs/TESTING.md "Sanitizers").
+        QSKIP("OpenVDB's reader allocates by the damaged file's sizes; ASan aborts on that");
+#endif
+#endif
         const std::string good = dir_.filePath("fluid_0004.vdb").toStdString();
         WaterVolumeFile::write(good, water_, UpAxis::Y);
         std::vector<std::uint8_t> bytes = AtomicFile::read(good);
