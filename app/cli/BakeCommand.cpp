@@ -113,6 +113,10 @@ ExitCode BakeCommand::explainFailure(const Error& error, ProgressLine& progress)
     else if (newest > 0 && error.kind() == ErrorKind::Io)
         std::cerr << "note: the cache in " << outDir_ << " is consistent (" << frameSpan(1, newest)
                   << "); once the problem is fixed, continue with --resume\n";
+    else if (error.kind() == ErrorKind::Io)
+        std::cerr << "note: no frame is cached in " << outDir_
+                  << " yet; once the problem is fixed, continue with --resume (it starts the "
+                     "bake when there is nothing to continue)\n";
     return exitCodeFor(error.kind());
 }
 

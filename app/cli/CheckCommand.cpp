@@ -1,10 +1,12 @@
 #include "CheckCommand.h"
 
 #include "cache/FrameCache.h"
+#include "core/AtomicFile.h"
 #include "core/Error.h"
 #include "post/PostStore.h"
 #include "post/SubgridStore.h"
 
+#include <filesystem>
 #include <iostream>
 
 namespace airtrap::cli {
@@ -24,6 +26,27 @@ void verifyOne(Read&& read, std::vector<std::string>& damaged) {
     }
 }
 
+//! A list that is gone while result files are still there: a first post run stopped before it
+//! wrote its list, or the list was deleted. Not damage (nothing listed is lost), but nothing
+//! vouches for those files: post makes them again. Empty when the list is there or nothing is.
+std::string lostList(const std::string& list, const std::vector<std::string>& kinds) {
+    std::error_code error;
+    if (std::filesystem::exists(list, error))
+        return {};
+    std::size_t results = 0;
+    const std::filesystem::path folder = std::filesystem::path(list).parent_path();
+    for (std::filesystem::directory_iterator it(folder, error), end; !error && it != end;
+         it.increment(error)) {
+        const std::string name = it->path().filename().string();
+        for (const std::string& kind : kinds)
+            results += name.starts_with(kind) && !AtomicFile::isTemporaryName(name);
+    }
+    if (results == 0)
+        return {};
+    return list + ": missing, while the folder holds " + std::to_string(results) +
+           " result file(s); they are not listed, and `airtrap-cli post` makes them again";
+}
+
 } // namespace
 
 void CheckCommand::addTo(CLI::App& parent) {
@@ -35,10 +58,13 @@ void CheckCommand::addTo(CLI::App& parent) {
 ExitCode CheckCommand::run() {
     // A damaged manifest is reported by open() itself (exit 3, naming the field).
     const FrameCache cache = FrameCache::open(cacheDir_);
-    bool damaged = report("cache frames", checkFrames(cache),
+    bool damaged = report("cache manifest", checkManifest(cache),
                           "bake the scene again with the command line that made the cache and "
-                          "--resume: it continues from the last frame before the first damaged "
-                          "one");
+                          "--resume: it writes the manifest's record of the scene again");
+    damaged |= report("cache frames", checkFrames(cache),
+                      "bake the scene again with the command line that made the cache and "
+                      "--resume: it continues from the last frame before the first damaged "
+                      "one");
     damaged |= report("post results", checkPostResults(),
                       "run `airtrap-cli post " + cacheDir_ + "`: it makes them again");
     damaged |= report("sub-grid bubble frames", checkSubgridFiles(),
@@ -47,6 +73,14 @@ ExitCode CheckCommand::run() {
         throw Error(ErrorKind::CacheCorrupt, cacheDir_ + ": damaged files found (above)");
     std::cout << "check: " << cacheDir_ << " is intact\n";
     return ExitCode::Success;
+}
+
+CheckCommand::Findings CheckCommand::checkManifest(const FrameCache& cache) const {
+    Findings findings;
+    findings.verified = 1;
+    if (std::string damage = cache.recordedSceneDamage(); !damage.empty())
+        findings.damaged.push_back(std::move(damage));
+    return findings;
 }
 
 CheckCommand::Findings CheckCommand::checkFrames(const FrameCache& cache) const {
@@ -65,6 +99,9 @@ CheckCommand::Findings CheckCommand::checkPostResults() const {
             const PostStore store = PostStore::open(cacheDir_);
             findings.verified = int(store.frames().size());
             findings.damaged = store.verify();
+            const std::string list = store.directory() + "/" + PostStore::kManifestName;
+            if (std::string lost = lostList(list, {"water_", "fluid_"}); !lost.empty())
+                findings.notes.push_back(std::move(lost));
         },
         findings.damaged);
     return findings;
@@ -79,6 +116,9 @@ CheckCommand::Findings CheckCommand::checkSubgridFiles() const {
                 ++findings.verified;
                 verifyOne([&] { store.readFrame(frame); }, findings.damaged);
             }
+            const std::string list = store.directory() + "/" + SubgridStore::kManifestName;
+            if (std::string lost = lostList(list, {"subgrid_"}); !lost.empty())
+                findings.notes.push_back(std::move(lost));
         },
         findings.damaged);
     return findings;
@@ -90,6 +130,8 @@ bool CheckCommand::report(const char* what, const Findings& findings,
               << " damaged\n";
     for (const std::string& problem : findings.damaged)
         std::cout << "  damaged: " << problem << '\n';
+    for (const std::string& note : findings.notes)
+        std::cout << "  note: " << note << '\n';
     if (!findings.damaged.empty())
         std::cout << "  to repair: " << wayOn << '\n';
     return !findings.damaged.empty();

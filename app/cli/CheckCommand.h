@@ -23,8 +23,11 @@ private:
     struct Findings {
         int verified = 0;
         std::vector<std::string> damaged;
+        std::vector<std::string> notes; //!< worth knowing, not damage
     };
 
+    //! The manifest's record of the scene (its JSON was read by FrameCache::open).
+    Findings checkManifest(const FrameCache& cache) const;
     Findings checkFrames(const FrameCache& cache) const;
     Findings checkPostResults() const;
     Findings checkSubgridFiles() const;

@@ -7,8 +7,10 @@
 #include "core/Error.h"
 #include "io/SequenceExporter.h"
 
+#include <cmath>
 #include <iostream>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 namespace airtrap::cli {
@@ -44,7 +46,7 @@ void ExportCommand::addTo(CLI::App& parent) {
     app_->add_option("--set", overrides_,
                      "Change a render setting for this export, e.g. bubble_mesh.magnitude=0.2 "
                      "(surface_mesh.*, bubble_mesh.* and subgrid_bubbles.* only)");
-    app_->add_flag("--quiet,-q", quiet_, "No summary line");
+    app_->add_flag("--quiet,-q", quiet_, "No progress line and no summary");
 }
 
 ExitCode ExportCommand::summarise(const ExportReport& report) const {
@@ -73,9 +75,21 @@ ExitCode ExportCommand::run() {
                                 .outDir = outDir_,
                                 .up = upAxisNamed(up_).value_or(UpAxis::Y)};
     SequenceExporter exporter(cache, scene, options);
-    Interrupter interrupter;
+    // The same progress line as post's: a VDB export of a long bake takes minutes.
+    const bool inPlace = !quiet_ && ::isatty(STDERR_FILENO);
+    const auto total = frames.size();
+    Interrupter interrupter([&](const std::string& stage, double percent) {
+        if (quiet_)
+            return;
+        std::cerr << (inPlace ? "\r" : "") << stage << ": "
+                  << std::lround(percent * double(total) / 100.0) << " of " << total << " frame(s)"
+                  << (inPlace ? "" : "\n") << std::flush;
+    });
     const SignalStopper stopper(interrupter);
-    return summarise(exporter.run(frames, interrupter));
+    const ExportReport report = exporter.run(frames, interrupter);
+    if (inPlace)
+        std::cerr << '\n';
+    return summarise(report);
 }
 
 } // namespace airtrap::cli

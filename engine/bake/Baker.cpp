@@ -1,6 +1,7 @@
 #include "bake/Baker.h"
 
 #include "cache/FrameCache.h"
+#include "core/AtomicFile.h"
 #include "core/Error.h"
 #include "scene/SceneJson.h"
 #include "sim/BodyBuilder.h"
@@ -66,12 +67,13 @@ void Baker::report(const std::string& message) const {
 FrameCache Baker::openCache() const {
     const std::string hash = parameterHash(scene_);
     const bool continuing = options_.resume || options_.firstFrame > 1;
-    FrameCache cache = continuing && FrameCache::isCache(options_.cacheDir)
-                           ? FrameCache::open(options_.cacheDir)
+    FrameCache cache = continuing && FrameCache::isCache(options_.cacheDir) ? openOrRebuild(hash)
                        : continuing && FrameCache::holdsFrameFiles(options_.cacheDir)
-                           ? rebuiltCache(hash)
+                           ? rebuiltCache(hash, "was missing")
                            : FrameCache::create(options_.cacheDir, cachedSceneJson(), hash,
                                                 scene_.frames.fps, options_.overwrite);
+    if (continuing)
+        repairRecordedScene(cache, hash);
     if (cache.manifest().parameterHash != hash && continuing && options_.adoptEditedScene)
         adoptEditedScene(cache);
     if (cache.manifest().parameterHash != hash)
@@ -79,15 +81,47 @@ FrameCache Baker::openCache() const {
                     options_.cacheDir + " was baked from a different scene (parameter hash " +
                         cache.manifest().parameterHash + ", this scene " + hash +
                         "); bake into another folder or start again with --overwrite");
+    // A bake killed mid-write left its temporary; this bake writes that frame again.
+    AtomicFile::removeOrphanedTemporaries(options_.cacheDir);
     return cache;
 }
 
-FrameCache Baker::rebuiltCache(const std::string& hash) const {
+void Baker::repairRecordedScene(FrameCache& cache, const std::string& hash) const {
+    const std::string damage = cache.recordedSceneDamage();
+    if (damage.empty())
+        return;
+    // The scene and its hash disagree, so one of them is damaged. When either is this scene's,
+    // the frames are this scene's and both are written again; otherwise the check below refuses
+    // the cache as another scene's.
+    std::string recordedHash;
+    try {
+        recordedHash = parameterHash(sceneFromJson(cache.manifest().scene, ""));
+    } catch (const Error&) {
+    }
+    if (cache.manifest().parameterHash != hash && recordedHash != hash)
+        return;
+    cache.replaceScene(cachedSceneJson(), hash);
+    report(damage + ": damaged; written again from this scene");
+}
+
+FrameCache Baker::openOrRebuild(const std::string& hash) const {
+    try {
+        return FrameCache::open(options_.cacheDir);
+    } catch (const Error& error) {
+        // A manifest of a newer Airtrap is not damaged: this build must not replace it.
+        if (error.kind() != ErrorKind::CacheCorrupt ||
+            CacheManifest::isFromANewerBuild(options_.cacheDir + "/" + CacheManifest::kFileName))
+            throw;
+        return rebuiltCache(hash, "was damaged (" + std::string(error.what()) + ")");
+    }
+}
+
+FrameCache Baker::rebuiltCache(const std::string& hash, const std::string& why) const {
     // The frames are taken as this scene's: a frame file holds no trace of the scene it was
     // baked from beyond its time, which rebuild() checks against this scene's frame rate.
     std::vector<std::string> notes;
-    FrameCache cache =
-        FrameCache::rebuild(options_.cacheDir, cachedSceneJson(), hash, scene_.frames.fps, notes);
+    FrameCache cache = FrameCache::rebuild(options_.cacheDir, cachedSceneJson(), hash,
+                                           scene_.frames.fps, why, notes);
     for (const std::string& note : notes)
         report(note);
     return cache;

@@ -68,7 +68,14 @@ private:
     nlohmann::json cachedSceneJson() const;
     void adoptEditedScene(FrameCache& cache) const;
     //! The cache in cacheDir, its lost manifest rebuilt from the frame files (a resume).
-    FrameCache rebuiltCache(const std::string& hash) const;
+    //! Writes the manifest's record of the scene again when it is damaged and the frames are
+    //! this scene's (recordedSceneDamage()).
+    void repairRecordedScene(FrameCache& cache, const std::string& hash) const;
+    //! The cache to continue; a damaged manifest (not one of a newer Airtrap) is rebuilt from
+    //! the frame files, as a lost one is.
+    FrameCache openOrRebuild(const std::string& hash) const;
+    //! The cache listed again from its frame files; `why` ("was missing") goes to the messages.
+    FrameCache rebuiltCache(const std::string& hash, const std::string& why) const;
     //! The simulation at the frame to continue from; on a fresh bake, frame 1, written.
     std::unique_ptr<Simulation> startingPoint(FrameCache& cache);
     Outcome bakeFrames(Simulation& simulation, FrameCache& cache, Interrupter& interrupter,

@@ -156,6 +156,18 @@ CacheManifest CacheManifest::read(const std::string& path) {
     return fromJson(object, path);
 }
 
+bool CacheManifest::isFromANewerBuild(const std::string& path) {
+    try {
+        const std::vector<std::uint8_t> bytes = AtomicFile::read(path);
+        const json object = json::parse(bytes.begin(), bytes.end());
+        const auto version = object.find("format_version");
+        return version != object.end() && version->is_number_integer() &&
+               version->get<long long>() > kFormatVersion;
+    } catch (const std::exception&) {
+        return false;
+    }
+}
+
 void CacheManifest::write(const std::string& path) const {
     AtomicFile::write(path, toJson().dump(2) + "\n");
 }

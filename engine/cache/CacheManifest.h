@@ -45,6 +45,9 @@ struct CacheManifest {
 
     //! Reads and validates a manifest file. Missing or unreadable → Error(Io) naming it.
     static CacheManifest read(const std::string& path);
+    //! True when the file at `path` parses and declares a format version above this build's:
+    //! not damage but a cache this build must leave alone.
+    static bool isFromANewerBuild(const std::string& path);
     //! Writes atomically (AtomicFile); Error(Io) on failure, the old file stays intact.
     void write(const std::string& path) const;
 

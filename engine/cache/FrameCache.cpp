@@ -213,7 +213,7 @@ bool FrameCache::holdsFrameFiles(const std::string& dir) {
 }
 
 FrameCache FrameCache::rebuild(const std::string& dir, const nlohmann::json& sceneJson,
-                               const std::string& parameterHash, double fps,
+                               const std::string& parameterHash, double fps, const std::string& why,
                                std::vector<std::string>& notes) {
     const std::string folder = withoutTrailingSlash(dir);
     CacheManifest manifest;
@@ -243,7 +243,7 @@ FrameCache FrameCache::rebuild(const std::string& dir, const nlohmann::json& sce
         manifest.setFrame({frame, name, bytes.size(), computeCrc32(bytes.data(), bytes.size())});
     }
     manifest.write(folder + "/" + CacheManifest::kFileName);
-    notes.push_back(std::string(CacheManifest::kFileName) + " was missing: rebuilt from " +
+    notes.push_back(std::string(CacheManifest::kFileName) + " " + why + ": rebuilt from " +
                     std::to_string(manifest.frames.size()) + " frame file(s) that verify");
     return FrameCache(folder, std::move(manifest));
 }
@@ -369,6 +369,21 @@ std::string FrameCache::frameFileName(int frame) {
 void FrameCache::setStatus(const std::string& status) {
     const std::lock_guard lock(mutex_);
     updateManifest([&](CacheManifest& m) { m.status = status; });
+}
+
+std::string FrameCache::recordedSceneDamage() const {
+    const CacheManifest recorded = manifest();
+    const std::string path = manifestPath();
+    std::string hash;
+    try {
+        hash = parameterHash(sceneFromJson(recorded.scene, path + ": scene"));
+    } catch (const Error& error) {
+        return path + ": the scene it records does not read back (" + error.what() + ")";
+    }
+    if (hash != recorded.parameterHash)
+        return path + ": the scene it records has parameter hash " + hash + ", not the " +
+               recorded.parameterHash + " it lists";
+    return {};
 }
 
 void FrameCache::replaceScene(const nlohmann::json& sceneJson, const std::string& parameterHash) {

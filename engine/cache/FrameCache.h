@@ -38,13 +38,14 @@ public:
     static bool isCache(const std::string& dir);
     //! True when `dir` contains frame files (frame_NNNN.atf), with or without a manifest.
     static bool holdsFrameFiles(const std::string& dir);
-    //! A cache whose manifest.json is lost, listed again from its frame files: each that decodes
-    //! (its own checksums hold) and holds its frame's time of a bake at `fps`, in an unbroken
-    //! run from frame 1; the run ends at the first that does not. The manifest takes the given
-    //! scene, hash and fps (a resume's own) and status "stopped". What was listed, and where the
-    //! run ended, go to `notes`. A resume then verifies and continues it as any cache.
+    //! A cache whose manifest.json is lost or damaged, listed again from its frame files: each
+    //! that decodes (its own checksums hold) and holds its frame's time of a bake at `fps`, in an
+    //! unbroken run from frame 1; the run ends at the first that does not. The manifest takes the
+    //! given scene, hash and fps (a resume's own) and status "stopped". What was listed, and
+    //! where the run ended, go to `notes`. A resume then verifies and continues it as any cache.
+    //! `why` ("was missing") begins the note that says so.
     static FrameCache rebuild(const std::string& dir, const nlohmann::json& sceneJson,
-                              const std::string& parameterHash, double fps,
+                              const std::string& parameterHash, double fps, const std::string& why,
                               std::vector<std::string>& notes);
 
     FrameCache(FrameCache&& other) noexcept;
@@ -84,6 +85,11 @@ public:
 
     //! Sets "baking", "complete", "stopped" or "failed: <reason>" and writes the manifest.
     void setStatus(const std::string& status);
+
+    //! Empty when the scene the manifest records reads back and has the recorded parameter
+    //! hash; else what is wrong. A damaged byte there leaves the manifest readable, but post and
+    //! export could no longer read the bake's scene.
+    std::string recordedSceneDamage() const;
 
     //! Records that the frames from now on are baked from another scene (an edit in the middle of
     //! a bake, continued from the last kept frame).

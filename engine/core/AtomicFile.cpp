@@ -4,7 +4,10 @@
 
 #include <atomic>
 #include <cerrno>
+#include <charconv>
+#include <csignal>
 #include <fcntl.h>
+#include <filesystem>
 #include <sys/stat.h>
 #include <system_error>
 #include <unistd.h>
@@ -71,6 +74,27 @@ void syncFolder(const std::string& path) {
     ::close(fd);
     if (err != 0 && err != EINVAL && err != ENOTSUP)
         fail("cannot sync folder", folder, err);
+}
+
+//! The process id in a temporary's name ("frame_0003.atf.<pid>-<n>.tmp"), or 0 when the name
+//! is not one write() made.
+pid_t writerOf(const std::string& name) {
+    const std::string suffix = kTempSuffix;
+    const std::string stem = name.substr(0, name.size() - suffix.size());
+    const auto dot = stem.find_last_of('.');
+    const auto dash = stem.find_last_of('-');
+    if (dot == std::string::npos || dash == std::string::npos || dash < dot)
+        return 0;
+    pid_t pid = 0;
+    const char* first = stem.data() + dot + 1;
+    const char* last = stem.data() + dash;
+    const auto [end, error] = std::from_chars(first, last, pid);
+    return error == std::errc() && end == last && pid > 0 ? pid : 0;
+}
+
+bool isRunning(pid_t pid) {
+    // EPERM: it runs, under another user.
+    return ::kill(pid, 0) == 0 || errno == EPERM;
 }
 
 } // namespace
@@ -146,6 +170,23 @@ std::string AtomicFile::errorMessage(const std::string& action, const std::strin
         return action + " " + path + ": " + reason;
     }
     return action + " " + path + ": " + hint + " (" + reason + ")";
+}
+
+std::size_t AtomicFile::removeOrphanedTemporaries(const std::string& dir) {
+    std::size_t removed = 0;
+    std::error_code error;
+    for (std::filesystem::directory_iterator it(dir, error), end; !error && it != end;
+         it.increment(error)) {
+        const std::string name = it->path().filename().string();
+        if (!isTemporaryName(name))
+            continue;
+        const pid_t writer = writerOf(name);
+        if (writer == 0 || writer == ::getpid() || isRunning(writer))
+            continue;
+        if (::unlink(it->path().c_str()) == 0)
+            ++removed;
+    }
+    return removed;
 }
 
 bool AtomicFile::isTemporaryName(const std::string& name) {

@@ -26,6 +26,12 @@ public:
 
     //! True when `name` is one of the temporaries write() creates (they end in ".tmp").
     static bool isTemporaryName(const std::string& name);
+
+    //! Deletes the temporaries write() left in `dir` (not its subfolders) when their process died
+    //! before the rename (kill -9, a crash, power loss): those named after a process that no
+    //! longer runs. A writer still running keeps its own. Best effort: a file that cannot be
+    //! deleted stays, harmless. Returns how many were deleted.
+    static std::size_t removeOrphanedTemporaries(const std::string& dir);
 };
 
 } // namespace airtrap

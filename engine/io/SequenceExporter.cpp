@@ -202,6 +202,8 @@ ExportReport SequenceExporter::run(const std::vector<int>& frames, Interrupter& 
     if (error)
         throw Error(ErrorKind::Io, AtomicFile::errorMessage("cannot create folder", options_.outDir,
                                                             error.value()));
+    // An export killed mid-write left its temporary; this one writes that file again.
+    AtomicFile::removeOrphanedTemporaries(options_.outDir);
     ExportReport report;
     interrupter.start("export");
     for (std::size_t i = 0; i < frames.size(); ++i) {

@@ -1,5 +1,6 @@
 #include "post/PostStage.h"
 
+#include "core/AtomicFile.h"
 #include "core/Error.h"
 #include "post/FrameSolids.h"
 #include "post/FreeSurface.h"
@@ -86,6 +87,9 @@ PostReport PostStage::run(const std::vector<int>& frames, Interrupter& interrupt
     for (const std::string* damage : replaced)
         if (!damage->empty())
             report.replacedLists.push_back(*damage);
+    // A post killed mid-write left its temporaries (the sub-grid files share the folder); this
+    // run makes those results again.
+    AtomicFile::removeOrphanedTemporaries(store_.directory());
     interrupter.start("post");
     std::atomic<int> done{0};
     std::mutex progressMutex;

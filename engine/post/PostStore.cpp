@@ -14,9 +14,21 @@ namespace airtrap {
 
 namespace {
 
-std::uint32_t fileCrc32(const std::string& path) {
-    const std::vector<std::uint8_t> bytes = AtomicFile::read(path);
-    return computeCrc32(bytes.data(), bytes.size());
+//! The checksum post.json lists for a result file's bytes. A water mesh ends in the CRC-32 of
+//! the bytes before it, and the CRC-32 of data followed by its own CRC-32 is one constant for
+//! every file, which would tell no mesh from another: for a file that ends in its own CRC-32 the
+//! list holds the CRC-32 of the bytes before that trailer.
+std::uint32_t listedCrc32(const std::vector<std::uint8_t>& bytes, bool endsInItsOwnCrc) {
+    const std::size_t covered =
+        endsInItsOwnCrc && bytes.size() >= 4 ? bytes.size() - 4 : bytes.size();
+    return computeCrc32(bytes.data(), covered);
+}
+
+//! What an older build listed for every mesh: the CRC-32 of a whole file that ends in its own.
+constexpr std::uint32_t kSelfCheckedResidue = 0x2144DF1C;
+
+std::uint32_t fileCrc32(const std::string& path, bool endsInItsOwnCrc) {
+    return listedCrc32(AtomicFile::read(path), endsInItsOwnCrc);
 }
 
 constexpr const char* kPostFormatName = "airtrap-post";
@@ -86,20 +98,24 @@ bool PostStore::isCurrent(int frame, std::uint32_t sourceCrc32) const {
 }
 
 std::string PostStore::damageOf(const PostFrameEntry& entry) const {
-    const std::pair<std::string, std::uint32_t> files[] = {
-        {dir_ + "/" + meshName(entry.frame), entry.waterCrc32},
-        {dir_ + "/" + volumeName(entry.frame), entry.fluidCrc32}};
-    for (const auto& [path, listed] : files) {
+    const struct {
+        std::string path;
+        std::uint32_t listed;
+        bool endsInItsOwnCrc;
+    } files[] = {{dir_ + "/" + meshName(entry.frame), entry.waterCrc32, true},
+                 {dir_ + "/" + volumeName(entry.frame), entry.fluidCrc32, false}};
+    for (const auto& [path, listed, endsInItsOwnCrc] : files) {
         std::vector<std::uint8_t> bytes;
         try {
             bytes = AtomicFile::read(path);
         } catch (const Error&) {
             return path + ": missing or unreadable (listed in " + manifestPath() + ")";
         }
-        if (const std::uint32_t crc = computeCrc32(bytes.data(), bytes.size()); crc != listed)
+        if (listedCrc32(bytes, endsInItsOwnCrc) != listed)
             return path + ": does not match " + manifestPath() +
-                   (listed == 0 ? " (listed without a checksum by an older build)"
-                                : " (checksum mismatch)");
+                   (listed == 0 || (endsInItsOwnCrc && listed == kSelfCheckedResidue)
+                        ? " (listed without a usable checksum by an older build)"
+                        : " (checksum mismatch)");
     }
     return {};
 }
@@ -137,8 +153,8 @@ void PostStore::writeFrame(const PostFrameEntry& entry, const TriangleMesh& free
     WaterVolumeFile::write(volumePath, volume, UpAxis::Y);
     PostFrameEntry listed = entry;
     // Read back: the checksums of what is on disk, which is what a later run verifies.
-    listed.waterCrc32 = fileCrc32(meshPath);
-    listed.fluidCrc32 = fileCrc32(volumePath);
+    listed.waterCrc32 = fileCrc32(meshPath, true);
+    listed.fluidCrc32 = fileCrc32(volumePath, false);
     const std::lock_guard lock(mutex_);
     results_.put(listed);
 }
@@ -165,7 +181,7 @@ WaterVolume PostStore::readVolume(int frame) const {
     // Checked against its listed CRC-32 before OpenVDB sees it: OpenVDB trusts the sizes in a
     // file, and a damaged one asked it for 140 TB (found by the sanitizer build).
     const std::string path = dir_ + "/" + volumeName(frame);
-    if (entry.fluidCrc32 != 0 && fileCrc32(path) != entry.fluidCrc32)
+    if (entry.fluidCrc32 != 0 && fileCrc32(path, false) != entry.fluidCrc32)
         throw Error(ErrorKind::CacheCorrupt,
                     path + ": does not match " + manifestPath() + " (checksum mismatch)");
     return WaterVolumeFile::read(path);

@@ -64,7 +64,18 @@ const SubgridFrameEntry* SubgridStore::entry(int frame) const {
 
 bool SubgridStore::isCurrent(int frame, std::uint32_t chainCrc32) const {
     const SubgridFrameEntry* listed = entry(frame);
-    return listed != nullptr && listed->chainCrc32 == chainCrc32;
+    return listed != nullptr && listed->chainCrc32 == chainCrc32 && isIntact(frame);
+}
+
+bool SubgridStore::isIntact(int frame) const {
+    // The list holds no checksum of the file; the file's own (magic, version, CRC-32 trailer)
+    // tells whether it is whole. The files are small: reading one costs little.
+    try {
+        (void)readFrame(frame);
+        return true;
+    } catch (const Error&) {
+        return false;
+    }
 }
 
 bool SubgridStore::isCurrentIn(const CacheManifest& manifest, int frame) const {
@@ -96,7 +107,11 @@ SubgridFrame SubgridStore::readFrame(int frame) const {
         throw Error(ErrorKind::InvalidInput, "frame " + std::to_string(frame) +
                                                  " has no sub-grid bubbles in " + dir_ +
                                                  "; run `airtrap-cli post` on the cache first");
-    return SubgridFile::read(dir_ + "/" + fileName(frame));
+    const std::string path = dir_ + "/" + fileName(frame);
+    if (std::error_code error; !std::filesystem::exists(path, error))
+        throw Error(ErrorKind::CacheCorrupt,
+                    path + ": missing (listed in " + dir_ + "/" + kManifestName + ")");
+    return SubgridFile::read(path);
 }
 
 } // namespace airtrap

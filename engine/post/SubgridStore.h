@@ -42,7 +42,10 @@ public:
     //! Adopts `settings`; when they differ from the listed frames' settings, all are unlisted.
     void useSettings(const nlohmann::json& settings);
 
+    //! Listed with this chain, and its file is whole: a damaged file is made again.
     bool isCurrent(int frame, std::uint32_t chainCrc32) const;
+    //! The file of a listed frame reads back (magic, version, its own CRC-32).
+    bool isIntact(int frame) const;
     //! isCurrent() with the chain of `manifest`'s frames up to `frame`; false when it is not
     //! listed there.
     bool isCurrentIn(const CacheManifest& manifest, int frame) const;
@@ -53,7 +56,8 @@ public:
 
     //! Writes the frame's file, then lists it. Error(Io) leaves it unlisted.
     void writeFrame(const SubgridFrameEntry& entry, const SubgridFrame& bubbles);
-    //! A listed frame's bubbles; a damaged file → Error(CacheCorrupt) naming it, an unlisted one
+    //! A listed frame's bubbles; a damaged or missing file → Error(CacheCorrupt) naming it, an
+    //! unlisted one
     //! → Error(InvalidInput) saying to run `post`.
     SubgridFrame readFrame(int frame) const;
 

@@ -73,7 +73,9 @@ WaterVolume WaterVolumeFile::read(const std::string& path) {
     const std::vector<std::uint8_t> bytes = AtomicFile::read(path);
     try {
         std::istringstream in(std::string(bytes.begin(), bytes.end()), std::ios::binary);
-        openvdb::io::Stream stream(in);
+        // Not delay-loaded: OpenVDB would first copy the stream to a temporary file of its own,
+        // which fails under a file-size limit or a full /tmp while the bytes are already here.
+        openvdb::io::Stream stream(in, /*delayLoad=*/false);
         auto grids = std::make_shared<WaterGrids>();
         for (const openvdb::GridBase::Ptr& grid : *stream.getGrids()) {
             if (grid->getName() == "surface")

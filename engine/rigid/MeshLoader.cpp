@@ -113,6 +113,8 @@ TriangleMesh MeshLoader::readTriangles(const std::string& path) {
     std::string objText; // kept alive while assimp reads it
     if (ObjText::isObjPath(path)) {
         objText = ObjText::withLeadingZeros(readText(path));
+        if (const std::string problem = ObjText::problemIn(objText); !problem.empty())
+            refuse(path, "not a valid OBJ file: " + problem);
         scene = importer.ReadFileFromMemory(objText.data(), objText.size(), flags, "obj");
     } else {
         scene = importer.ReadFile(path, flags);

@@ -2,7 +2,11 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
+#include <vector>
 
 namespace airtrap {
 
@@ -23,7 +27,78 @@ bool isCoordinateLine(std::string_view line) {
     return false;
 }
 
+std::vector<std::string_view> tokensOf(std::string_view line) {
+    std::vector<std::string_view> tokens;
+    std::size_t k = 0;
+    while (k < line.size()) {
+        while (k < line.size() && (isBlank(line[k]) || line[k] == '\r'))
+            ++k;
+        const std::size_t start = k;
+        while (k < line.size() && !isBlank(line[k]) && line[k] != '\r')
+            ++k;
+        if (k > start)
+            tokens.push_back(line.substr(start, k - start));
+    }
+    return tokens;
+}
+
+bool isNumber(std::string_view token) {
+    const std::string text(token);
+    char* end = nullptr;
+    const double value = std::strtod(text.c_str(), &end);
+    return end == text.c_str() + text.size() && std::isfinite(value);
+}
+
+//! "12", "12/3", "12/3/4", "12//4": the vertex index before the first slash.
+bool vertexIndexOf(std::string_view token, long long& index) {
+    const std::string_view digits = token.substr(0, token.find('/'));
+    const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), index);
+    return error == std::errc() && end == digits.data() + digits.size() && index != 0;
+}
+
 } // namespace
+
+std::string ObjText::problemIn(std::string_view text) {
+    long long vertices = 0;
+    long long lineNumber = 1;
+    for (std::size_t start = 0; start < text.size(); ++lineNumber) {
+        const std::size_t end = std::min(text.find('\n', start), text.size());
+        const std::string_view line = text.substr(start, end - start);
+        if (std::string problem = problemInLine(line, vertices); !problem.empty())
+            return "line " + std::to_string(lineNumber) + ": " + problem;
+        const std::vector<std::string_view> tokens = tokensOf(line);
+        vertices += !tokens.empty() && tokens.front() == "v";
+        start = end + 1;
+    }
+    return {};
+}
+
+std::string ObjText::problemInLine(std::string_view line, long long vertices) {
+    const std::vector<std::string_view> tokens = tokensOf(line);
+    if (tokens.empty())
+        return {};
+    const std::string_view tag = tokens.front();
+    if (tag == "v" || tag == "vn" || tag == "vt") {
+        for (std::size_t k = 1; k < tokens.size(); ++k)
+            if (!isNumber(tokens[k]))
+                return std::string(tag) + " value '" + std::string(tokens[k]) + "' is not a number";
+        if (tag == "v" && tokens.size() < 4)
+            return "a vertex needs 3 coordinates, this one has " +
+                   std::to_string(tokens.size() - 1);
+    }
+    if (tag != "f")
+        return {};
+    for (std::size_t k = 1; k < tokens.size(); ++k) {
+        long long index = 0;
+        if (!vertexIndexOf(tokens[k], index))
+            return "face corner '" + std::string(tokens[k]) + "' has no vertex index";
+        // Negative indices count back from the last vertex defined.
+        if (index > vertices || -index > vertices)
+            return "the face refers to vertex " + std::to_string(index) + ", but " +
+                   std::to_string(vertices) + " are defined before it";
+    }
+    return {};
+}
 
 bool ObjText::isObjPath(const std::string& path) {
     std::string extension = std::filesystem::path(path).extension().string();

@@ -305,6 +305,7 @@ private:
                           key(&SolverSettings::particleSpacing) + " = " + number(spacing) +
                           " m; the water cannot feel a smaller solid");
             };
+            checkBodyFitsTheDomain(label, body);
             if (body.shape == "box")
                 tooSmall(name(&RigidBodySettings::size), body.size.minCoeff());
             if (body.shape == "sphere" || body.shape == "cylinder")
@@ -315,6 +316,33 @@ private:
                 error(label + "." + name(&RigidBodySettings::mesh) +
                       " is empty; shape \"mesh\" needs a mesh file");
         }
+    }
+
+    //! Sampling a body's surface and checking its placement cost time as its size over the
+    //! spacing, squared and cubed: a sphere of 5 m in a 1-m tank kept validation busy for
+    //! seconds. A body wider than the domain's diagonal fits nowhere in it, whatever its pose,
+    //! so it is refused before that work. (Mesh bodies are measured once their file is read:
+    //! BodyBuilder::checkFitsTheDomain.)
+    void checkBodyFitsTheDomain(const std::string& label, const RigidBodySettings& body) {
+        double across = 0.0;
+        std::string field;
+        if (body.shape == "box") {
+            across = body.size.norm();
+            field = name(&RigidBodySettings::size);
+        } else if (body.shape == "sphere") {
+            across = 2.0 * body.radius;
+            field = name(&RigidBodySettings::radius);
+        } else if (body.shape == "cylinder") {
+            across = std::hypot(2.0 * body.radius, body.height);
+            field = name(&RigidBodySettings::radius) + " and " + name(&RigidBodySettings::height);
+        } else {
+            return;
+        }
+        const double diagonal = scene_.domain().size().norm();
+        if (across > diagonal)
+            error(label + "." + field + ": the " + body.shape + " is " + number(across) +
+                  " m across, larger than the domain (container plus headroom, " +
+                  number(diagonal) + " m corner to corner); expected a body that fits inside");
     }
 
     void checkBubbles() {
@@ -469,9 +497,9 @@ std::vector<std::string> SceneValidator::ruleDescriptions() {
             "budgets).",
         "Bodies have different names; boxes, spheres and cylinders are at least "
         "`particle_spacing` in every size; a mesh body names a closed, readable mesh file "
-        "(relative to the scene file; a regular file, not a folder, FIFO or device) that, scaled "
-        "by `mesh_scale`, is no wider than the domain's diagonal (checked before the mesh is "
-        "sampled); every body lies inside the domain.",
+        "(relative to the scene file; a regular file, not a folder, FIFO or device); every body, "
+        "a mesh scaled by `mesh_scale`, is no wider than the domain's diagonal (checked before "
+        "the body is sampled); every body lies inside the domain.",
         "Every keyframe names a kinematic body, and no two keyframes of a body share a time.",
         "`bubbles.approach_restitution` is at most `bubbles.overlap_restitution` (ε₁ ≤ ε₂ ≤ 0); "
         "with bubbles enabled and WCSPH, `bubbles.max_rise_speed` is at most `solver.max_speed`.",

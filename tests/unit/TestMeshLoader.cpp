@@ -184,6 +184,46 @@ private Q_SLOTS:
                  std::string("v 0.1 -0.2 +0.3 1.5\nf 1 2 3\n# .4\nvt 0.5 0.5"));
     }
 
+    void refusesAMalformedObjBeforeAssimpReadsIt_data() {
+        QTest::addColumn<QString>("text");
+        QTest::addColumn<QString>("problem");
+        const QString tetrahedron = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n";
+        // The fuzzer's input: a coordinate mangled into a word. assimp 5.2 leaked the mesh it
+        // was building when it then met the faces.
+        QTest::newRow("word for a coordinate") << "v 0 0 0\nv -0.07 0.03 u.0033\nv 0 1 0\nf 1 2 3\n"
+                                               << "line 2: v value 'u.0033' is not a number";
+        QTest::newRow("two coordinates") << "v 0 0\nf 1 1 1\n"
+                                         << "line 1: a vertex needs 3 coordinates, this one has 2";
+        QTest::newRow("face past the vertices")
+            << tetrahedron + "f 1 2 5\n"
+            << "line 5: the face refers to vertex 5, but 4 are defined before it";
+        QTest::newRow("face before its vertex")
+            << "v 0 0 0\nf 1 2 3\nv 1 0 0\nv 0 1 0\n"
+            << "line 2: the face refers to vertex 2, but 1 are defined before it";
+        QTest::newRow("negative index too far back")
+            << tetrahedron + "f -1 -2 -5\n"
+            << "line 5: the face refers to vertex -5, but 4 are defined before it";
+        QTest::newRow("index zero") << tetrahedron + "f 0 1 2\n"
+                                    << "line 5: face corner '0' has no vertex index";
+        QTest::newRow("normal not a number") << "vn 0 nan 1\n"
+                                             << "line 1: vn value 'nan' is not a number";
+    }
+
+    void refusesAMalformedObjBeforeAssimpReadsIt() {
+        QFETCH(QString, text);
+        QFETCH(QString, problem);
+        QCOMPARE(QString::fromStdString(ObjText::problemIn(text.toStdString())), problem);
+        std::ofstream(pathOf("bad.obj")) << text.toStdString();
+        const std::string message = loadError(pathOf("bad.obj"));
+        QVERIFY2(contains(message,
+                          pathOf("bad.obj") + ": not a valid OBJ file: " + problem.toStdString()),
+                 message.c_str());
+        // Valid forms are not refused: slashes, negative indices, colours, CRLF line ends.
+        QCOMPARE(ObjText::problemIn("v 0 0 0 1 0 0\r\nv 1 0 0\nv 0 1 0\nvt 0 0\nvn 0 0 1\n"
+                                    "f 1/1/1 2//1 -1/1\n"),
+                 std::string());
+    }
+
     void refusesAFifoAndAFolderWithoutWaiting() {
         // Opened for reading, a FIFO with no writer blocks forever: the loader must not open it.
         const std::string fifo = pathOf("pipe.obj");
