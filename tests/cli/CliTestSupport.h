@@ -22,9 +22,13 @@ inline QString cliPath() {
     return QStringLiteral(AIRTRAP_BINARY_DIR "/bin/airtrap-cli");
 }
 
-//! Runs airtrap-cli to the end. `modifier` runs in the child before exec (limits, signals).
-inline CliResult runCli(const QStringList& arguments, const std::function<void()>& modifier = {}) {
+//! Runs airtrap-cli to the end. `modifier` runs in the child before exec (limits, signals);
+//! `environment` is the child's (the fault tests preload a library through it).
+inline CliResult
+runCli(const QStringList& arguments, const std::function<void()>& modifier = {},
+       const QProcessEnvironment& environment = QProcessEnvironment::systemEnvironment()) {
     QProcess process;
+    process.setProcessEnvironment(environment);
     if (modifier)
         process.setChildProcessModifier(modifier);
     process.start(cliPath(), arguments);

@@ -1,15 +1,14 @@
 // airtrap-cli end to end: every verb run as a process on a tiny scene, checking exit codes,
-// messages, the cache left behind, bit-identical resume, Ctrl-C and I/O failures (docs/CLI.md,
-// docs/CACHE_FORMAT.md).
+// messages, the cache left behind, bit-identical resume and damage (docs/CLI.md,
+// docs/CACHE_FORMAT.md). Full disks, file-size limits, kill -9 and Ctrl-C are the fault
+// tests' (tests/faults).
 #include "cache/FrameCache.h"
 #include "cli/CliTestSupport.h"
 #include "support/TestMain.h"
 
 #include <QRegularExpression>
 #include <QTemporaryDir>
-#include <csignal>
 #include <filesystem>
-#include <sys/resource.h>
 
 using namespace airtrap;
 using namespace airtrap::clitest;
@@ -407,119 +406,12 @@ private Q_SLOTS:
         QCOMPARE(framesOf(cache_), oneTo(2));
     }
 
-    void ctrlCStopsWithAConsistentResumableCache() {
-        const std::string scene = writeScene("long.json", tinySceneText(200));
-        QProcess process;
-        process.setReadChannel(QProcess::StandardError);
-        process.start(cliPath(), args({"bake", scene, "--out", cache_}));
-        QVERIFY(process.waitForStarted());
-        QByteArray err;
-        // Wait for a few finished frames (one line each when stderr is not a terminal).
-        while (!err.contains("frame 3/200") && process.waitForReadyRead(60000))
-            err += process.readAllStandardError();
-        QVERIFY2(err.contains("frame 3/200"), err.constData());
-        ::kill(pid_t(process.processId()), SIGINT);
-        QVERIFY(process.waitForFinished(60000));
-        err += process.readAllStandardError();
-        QCOMPARE(process.exitStatus(), QProcess::NormalExit);
-        QVERIFY2(process.exitCode() == 130, err.constData());
-        QVERIFY2(err.contains("resume with: airtrap-cli bake"), err.constData());
-
-        QCOMPARE(readJson(cache_ + "/manifest.json").at("status").get<std::string>(),
-                 std::string("stopped"));
-        const std::vector<int> frames = framesOf(cache_);
-        QVERIFY(frames.size() >= 3 && frames.size() < 200);
-        QCOMPARE(frames, oneTo(int(frames.size())));
-        QVERIFY(FrameCache::open(cache_).verify().empty());
-
-        const CliResult resumed = runCli(args({"bake", scene, "--out", cache_, "--resume"}));
-        QCOMPARE_EXIT(resumed, 0);
-        QCOMPARE(framesOf(cache_), oneTo(200));
-    }
-
-    void ctrlCStopsPostOnTwoThreadsCleanly() {
-        const std::string scene = writeScene("long.json", tinySceneText(40));
-        QCOMPARE_EXIT(runCli(args({"bake", scene, "--out", cache_, "-q"})), 0);
-        for (int run = 0; run < 3; ++run) {
-            fs::remove_all(cache_ + "/post");
-            QProcess process;
-            process.setReadChannel(QProcess::StandardError);
-            process.start(cliPath(), args({"post", cache_, "--threads", "2"}));
-            QVERIFY(process.waitForStarted());
-            QByteArray err;
-            // Stopped while frames are being made side by side.
-            while (!err.contains("post: 2 of 40") && process.waitForReadyRead(60000))
-                err += process.readAllStandardError();
-            QVERIFY2(err.contains("post: 2 of 40"), err.constData());
-            ::kill(pid_t(process.processId()), SIGINT);
-            QVERIFY(process.waitForFinished(60000));
-            err += process.readAllStandardError();
-            QCOMPARE(process.exitStatus(), QProcess::NormalExit);
-            QVERIFY2(process.exitCode() == 130, err.constData());
-            QVERIFY2(err.contains("run post again to finish"), err.constData());
-        }
-        const CliResult again = runCli(args({"post", cache_, "--threads", "2"}));
-        QCOMPARE_EXIT(again, 0);
-        QVERIFY_CONTAINS(again.out, "already current");
-    }
-
     void outUnderAFileIsAnIoError() {
         writeText(path("plain"), "not a folder");
         const std::string out = path("plain") + "/cache";
         const CliResult result = runCli(args({"bake", scene_, "--out", out}));
         QCOMPARE_EXIT(result, 4);
         QVERIFY_CONTAINS(result.err, out);
-    }
-
-    void fullDiskStopsKeepingEveryGoodFrame() {
-        // A file-size limit just above one frame file: frames fit, but the manifest, which grows
-        // with every frame, hits the limit mid-bake like a full disk would.
-        bake(path("reference"));
-        const auto limit = rlim_t(fs::file_size(path("reference") + "/frame_0004.atf") + 64);
-        QVERIFY(fs::file_size(path("reference") + "/manifest.json") < limit);
-        const std::string scene = writeScene("long.json", tinySceneText(200));
-        // airtrap-cli itself must ignore SIGXFSZ (EFBIG instead of death): the child starts with
-        // the default action.
-        const CliResult result = runCli(args({"bake", scene, "--out", cache_}), [limit] {
-            std::signal(SIGXFSZ, SIG_DFL);
-            const rlimit small{limit, limit};
-            ::setrlimit(RLIMIT_FSIZE, &small);
-        });
-        QCOMPARE_EXIT(result, 4);
-        QVERIFY_CONTAINS(result.err, cache_);
-        QVERIFY_CONTAINS(result.err, "--resume");
-        const std::vector<int> frames = framesOf(cache_);
-        QVERIFY(frames.size() >= 2 && frames.size() < 200);
-        QCOMPARE(frames, oneTo(int(frames.size())));
-        QVERIFY(FrameCache::open(cache_).verify().empty());
-        for (const auto& entry : fs::directory_iterator(cache_))
-            QVERIFY2(entry.path().extension() != ".tmp", entry.path().c_str());
-        QCOMPARE_EXIT(runCli(args({"bake", scene, "--out", cache_, "--resume", "-q"})), 0);
-        QCOMPARE(framesOf(cache_), oneTo(200));
-    }
-
-    void postStopsAtAFileSizeLimitWithoutCrashing() {
-        bake(cache_);
-        QCOMPARE_EXIT(runCli(args({"post", cache_, "--frames", "1"})), 0);
-        // Below one frame's results: every frame's write fails while the other thread is still
-        // building its surface.
-        const auto limit = rlim_t(fs::file_size(cache_ + "/post/water_0001.atm") / 2);
-        fs::remove_all(cache_ + "/post");
-        for (const int threads : {1, 2}) {
-            const CliResult result =
-                runCli(args({"post", cache_, "--threads", std::to_string(threads)}), [limit] {
-                    std::signal(SIGXFSZ, SIG_DFL);
-                    const rlimit small{limit, limit};
-                    ::setrlimit(RLIMIT_FSIZE, &small);
-                });
-            QCOMPARE_EXIT(result, 4);
-            QVERIFY_CONTAINS(result.err, "file-size limit reached");
-            for (const auto& entry : fs::recursive_directory_iterator(cache_))
-                QVERIFY2(entry.path().extension() != ".tmp", entry.path().c_str());
-        }
-        const CliResult again = runCli(args({"post", cache_, "--threads", "2"}));
-        QCOMPARE_EXIT(again, 0);
-        QVERIFY_CONTAINS(again.out, "post: 4 frame(s) made");
     }
 
     void blowUpExitsFiveKeepingTheGoodFrames() {
