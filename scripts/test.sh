@@ -9,7 +9,7 @@
 # --sanitize builds everything with clang and those sanitizers into build-sanitize-<names>/
 # (docs/TESTING.md "Sanitizers") and runs the tests they are for: address,undefined the unit,
 # physics and cli tests; thread the tests of the code that runs threads (the bake controller, the
-# frame loader, post). Any report fails the test that caused it.
+# frame loader, post, Ctrl-C on two threads). Any report fails the test that caused it.
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -54,7 +54,7 @@ export LSAN_OPTIONS="suppressions=$suppressions/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 export TSAN_OPTIONS="suppressions=$suppressions/tsan.supp:halt_on_error=1:second_deadlock_stack=1"
 if [[ "$sanitize" == *thread* ]]; then
-    selection=(-R "^(TestSimulationController|TestRenderOutputController|TestFrameLoader|TestPostStore|TestCli)$")
+    selection=(-R "^(TestSimulationController|TestRenderOutputController|TestFrameLoader|TestPostStore|TestCli|TestInterrupts)$")
 else
     selection=(-L "^(unit|physics|cli)$")
 fi

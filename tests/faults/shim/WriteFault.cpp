@@ -96,6 +96,14 @@ mode_t modeArgument(int flags, va_list arguments) {
     return (flags & (O_CREAT | O_TMPFILE)) != 0 ? mode_t(va_arg(arguments, int)) : 0;
 }
 
+//! open() and open64(): the mode argument, when the flags say there is one, then openChecked().
+int openWithModeArgument(int (*real)(const char*, int, ...), const char* path, int flags,
+                         va_list arguments) {
+    const mode_t mode = modeArgument(flags, arguments);
+    return openChecked([real](const char* p, int f, mode_t m) { return real(p, f, m); }, path,
+                       flags, mode);
+}
+
 } // namespace
 
 extern "C" {
@@ -104,20 +112,18 @@ int open(const char* path, int flags, ...) {
     static const auto real = next<int (*)(const char*, int, ...)>("open");
     va_list arguments;
     va_start(arguments, flags);
-    const mode_t mode = modeArgument(flags, arguments);
+    const int fd = openWithModeArgument(real, path, flags, arguments);
     va_end(arguments);
-    return openChecked([](const char* p, int f, mode_t m) { return real(p, f, m); }, path, flags,
-                       mode);
+    return fd;
 }
 
 int open64(const char* path, int flags, ...) {
     static const auto real = next<int (*)(const char*, int, ...)>("open64");
     va_list arguments;
     va_start(arguments, flags);
-    const mode_t mode = modeArgument(flags, arguments);
+    const int fd = openWithModeArgument(real, path, flags, arguments);
     va_end(arguments);
-    return openChecked([](const char* p, int f, mode_t m) { return real(p, f, m); }, path, flags,
-                       mode);
+    return fd;
 }
 
 int openat(int dirfd, const char* path, int flags, ...) {
