@@ -119,21 +119,25 @@ private Q_SLOTS:
     }
 
     void onlyTheNewestRequestIsAnswered() {
-        FrameLoader loader;
+        // One frame of memory: every request that is not merged away needs the disk.
+        FrameLoader loader(FrameLru::Limits{.maxFrames = 1, .maxBytes = std::size_t(1) << 30});
         QSignalSpy loaded(&loader, &FrameLoader::frameLoaded);
         loader.setCacheDirectory(baked_.path());
         loader.request(2);
         // The GUI thread is busy for a moment (as while handling a drag) without running its
         // event loop: the loader reads frame 2 meanwhile, and its answer waits in the queue.
         std::this_thread::sleep_for(std::chrono::milliseconds(50));
-        loader.request(3);
-        loader.request(4);
+        constexpr int kRequests = 20;
+        for (int i = 0; i < kRequests; ++i)
+            loader.request(3 + i % 2); // 3, 4, 3, …, 4
         QVERIFY(loaded.wait(5000));
         QTest::qWait(300); // time for any stray answer to arrive
         QCOMPARE(loaded.count(), 1);
         QCOMPARE(loaded.first().at(0).toInt(), 4);
-        // 3 was replaced by 4 before the loader was free; reading it too would be wasted.
-        QVERIFY2(loader.loadsPerformed() <= 2,
+        // The requests made while the loader was busy were merged into the newest. A loaded
+        // machine may pause this thread between two requests and let the loader take one in
+        // between; without merging it would read the disk for every one of the 21.
+        QVERIFY2(loader.loadsPerformed() <= 4,
                  qPrintable(QString::number(loader.loadsPerformed())));
     }
 
