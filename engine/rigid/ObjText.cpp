@@ -63,18 +63,17 @@ std::string ObjText::problemIn(std::string_view text) {
     long long lineNumber = 1;
     for (std::size_t start = 0; start < text.size(); ++lineNumber) {
         const std::size_t end = std::min(text.find('\n', start), text.size());
-        const std::string_view line = text.substr(start, end - start);
-        if (std::string problem = problemInLine(line, vertices); !problem.empty())
+        const std::vector<std::string_view> tokens = tokensOf(text.substr(start, end - start));
+        if (std::string problem = problemInLine(tokens, vertices); !problem.empty())
             return "line " + std::to_string(lineNumber) + ": " + problem;
-        const std::vector<std::string_view> tokens = tokensOf(line);
         vertices += !tokens.empty() && tokens.front() == "v";
         start = end + 1;
     }
     return {};
 }
 
-std::string ObjText::problemInLine(std::string_view line, long long vertices) {
-    const std::vector<std::string_view> tokens = tokensOf(line);
+std::string ObjText::problemInLine(const std::vector<std::string_view>& tokens,
+                                   long long vertices) {
     if (tokens.empty())
         return {};
     const std::string_view tag = tokens.front();

@@ -4,6 +4,7 @@
 // line, and the faces then point past the vertices read ("vertex index out of range").
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace airtrap {
 
@@ -25,8 +26,10 @@ public:
 private:
     //! One line, its numbers given their leading zero when it is a v, vn or vt line.
     static void appendLine(std::string_view line, std::string& out);
-    //! What is wrong with one line, given how many vertices the lines before it defined.
-    static std::string problemInLine(std::string_view line, long long vertices);
+    //! What is wrong with one line (its blank-separated tokens), given how many vertices the
+    //! lines before it defined.
+    static std::string problemInLine(const std::vector<std::string_view>& tokens,
+                                     long long vertices);
 };
 
 } // namespace airtrap

@@ -87,9 +87,14 @@ class TestDiskFaults : public QObject {
             fs::remove_all(cache() + "/post");
     }
 
+    //! What the stage wrote in the undisturbed run.
+    std::string referenceOutput(const Stage& stage) const {
+        return stage.name == "post" ? referenceCache_ + "/post" : reference(stage);
+    }
+
     //! How many bytes the stage writes in an undisturbed run.
     std::uintmax_t bytesWritten(const Stage& stage) const {
-        const std::string dir = stage.name == "post" ? referenceCache_ + "/post" : reference(stage);
+        const std::string dir = referenceOutput(stage);
         std::uintmax_t total = 0;
         for (const std::string& file : filesUnder(dir))
             total += fs::file_size(dir + "/" + file);
@@ -208,8 +213,7 @@ private Q_SLOTS:
         // Below the size of the stage's largest file, above its smallest list: some writes
         // succeed, then one meets the limit.
         std::uintmax_t largest = 0;
-        const std::string dir =
-            writing.name == "post" ? referenceCache_ + "/post" : reference(writing);
+        const std::string dir = referenceOutput(writing);
         for (const std::string& file : filesUnder(dir))
             largest = std::max(largest, fs::file_size(dir + "/" + file));
         const auto limit = rlim_t(largest / 2);
