@@ -1,11 +1,11 @@
 #include "bubbles/BubbleDynamics.h"
 
+#include "core/Parallel.h"
 #include "core/PeriodicEvent.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <tbb/parallel_for.h>
 
 namespace airtrap {
 namespace {
@@ -84,7 +84,7 @@ void BubbleDynamics::measureSurroundings(double from, double to,
                                          const NeighborGrid& grid) const {
     const bool everyBubble = periodDue(from, to, kMeasureInterval);
     // Each bubble writes only its own entry: parallel, and the same bits on any thread count.
-    tbb::parallel_for(std::size_t(0), bubbles.size(), [&](std::size_t k) {
+    parallelFor(std::size_t(0), bubbles.size(), [&](std::size_t k) {
         BubbleSurroundings& around = bubbles[k].surroundings;
         if (everyBubble || !around.measured)
             around = measureOne(bodies[first + k], radii_[k], fluid, positions, grid);

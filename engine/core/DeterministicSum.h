@@ -1,9 +1,10 @@
 #pragma once
 // Sums over a range in parallel that give the same bits on any number of threads: the range is
 // split at fixed points and the parts are added in the same order every time.
+#include "core/Parallel.h"
+
 #include <cstddef>
 #include <tbb/blocked_range.h>
-#include <tbb/parallel_reduce.h>
 
 namespace airtrap {
 
@@ -13,7 +14,7 @@ template <class T, class F>
 T deterministicSum(std::size_t n, std::size_t grain, const T& zero, F&& f) {
     // Not "Range": in a unity batch a .cpp's own Range alias would be shadowed (clang -Wshadow).
     using SumRange = tbb::blocked_range<std::size_t>;
-    return tbb::parallel_deterministic_reduce(
+    return parallelDeterministicReduce(
         SumRange(0, n, grain), zero,
         [&](const SumRange& r, T sum) {
             for (std::size_t i = r.begin(); i != r.end(); ++i)

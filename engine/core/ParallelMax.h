@@ -1,10 +1,11 @@
 #pragma once
 // The largest of f(i) over a range, in parallel. max is exact in any order, so the result does not
 // depend on the number of threads or on how the range was split.
+#include "core/Parallel.h"
+
 #include <algorithm>
 #include <cstddef>
 #include <tbb/blocked_range.h>
-#include <tbb/parallel_reduce.h>
 
 namespace airtrap {
 
@@ -12,7 +13,7 @@ template <class F>
 double parallelMax(std::size_t n, F&& f, std::size_t grain = 1024) {
     // Not "Range": in a unity batch a .cpp's own Range alias would be shadowed (clang -Wshadow).
     using MaxRange = tbb::blocked_range<std::size_t>;
-    return tbb::parallel_reduce(
+    return parallelReduce(
         MaxRange(0, n, grain), 0.0,
         [&](const MaxRange& r, double best) {
             for (std::size_t i = r.begin(); i != r.end(); ++i)

@@ -2,7 +2,8 @@
 // Two parts of a step that share no data, run at the same time: the short serial stretches of
 // one fill the other's gaps instead of keeping a thread waiting. Each part is timed on its own,
 // so their phase times overlap.
-#include <tbb/parallel_invoke.h>
+#include "core/Parallel.h"
+
 #include <utility>
 
 namespace airtrap {
@@ -10,7 +11,7 @@ namespace airtrap {
 //! Runs `first` and `second` as two tasks and returns when both are done.
 template <class First, class Second>
 void runBeside(First&& first, Second&& second) {
-    tbb::parallel_invoke(std::forward<First>(first), std::forward<Second>(second));
+    parallelInvoke(std::forward<First>(first), std::forward<Second>(second));
 }
 
 } // namespace airtrap

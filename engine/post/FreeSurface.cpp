@@ -1,8 +1,9 @@
 #include "post/FreeSurface.h"
 
+#include "core/Parallel.h"
+
 #include <algorithm>
 #include <cmath>
-#include <tbb/parallel_for.h>
 
 namespace airtrap {
 
@@ -14,7 +15,7 @@ constexpr std::uint32_t kDropped = ~std::uint32_t(0);
 std::vector<char> markNearVertices(const TriangleMesh& water, const FrameSolids& solids,
                                    double margin) {
     std::vector<char> near(water.vertices.size());
-    tbb::parallel_for(std::size_t(0), water.vertices.size(), [&](std::size_t v) {
+    parallelFor(std::size_t(0), water.vertices.size(), [&](std::size_t v) {
         near[v] = solids.clearance(water.vertices[v]) < margin ? 1 : 0;
     });
     return near;
@@ -83,7 +84,7 @@ TriangleMesh freeSurfaceOnly(const TriangleMesh& water, const FrameSolids& solid
     const std::vector<char> near = markNearVertices(water, solids, margin);
     const double step = 1e-3 * margin;
     std::vector<char> kept(water.triangles.size(), 1);
-    tbb::parallel_for(std::size_t(0), water.triangles.size(), [&](std::size_t t) {
+    parallelFor(std::size_t(0), water.triangles.size(), [&](std::size_t t) {
         const TriangleMesh::Triangle& triangle = water.triangles[t];
         if (near[triangle[0]] && near[triangle[1]] && near[triangle[2]])
             kept[t] = facesTheSolid(water, t, solids, step) ? 0 : 1;
@@ -109,7 +110,7 @@ TriangleMesh freeSurfaceOnly(const TriangleMesh& water, const FrameSolids& solid
     // it with no gap, as the paper's Fig. 2d shows, and no kept polygon reaches inside it. Only
     // that edge moves: the free surface over a bubble just under it stays where it is.
     const std::vector<char> edge = openEdgeVertices(trimmed);
-    tbb::parallel_for(std::size_t(0), trimmed.vertices.size(), [&](std::size_t v) {
+    parallelFor(std::size_t(0), trimmed.vertices.size(), [&](std::size_t v) {
         if (edge[v] && solids.clearance(trimmed.vertices[v]) < margin)
             trimmed.vertices[v] = ontoSurface(trimmed.vertices[v], solids, step);
     });

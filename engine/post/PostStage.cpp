@@ -2,6 +2,7 @@
 
 #include "core/AtomicFile.h"
 #include "core/Error.h"
+#include "core/Parallel.h"
 #include "post/FrameSolids.h"
 #include "post/FreeSurface.h"
 #include "post/WaterVolume.h"
@@ -12,7 +13,6 @@
 #include <chrono>
 #include <exception>
 #include <mutex>
-#include <tbb/parallel_for.h>
 
 namespace airtrap {
 
@@ -98,7 +98,7 @@ PostReport PostStage::run(const std::vector<int>& frames, Interrupter& interrupt
     // it the OpenVDB work of the frames under way, halfway through building their trees.
     Interrupter frameStop(&interrupter);
     std::exception_ptr firstFailure;
-    tbb::parallel_for(std::size_t(0), frames.size(), [&](std::size_t i) {
+    parallelFor(std::size_t(0), frames.size(), [&](std::size_t i) {
         if (frameStop.stopRequested())
             return;
         try {

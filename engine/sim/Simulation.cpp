@@ -1,6 +1,7 @@
 #include "sim/Simulation.h"
 
 #include "core/Error.h"
+#include "core/Parallel.h"
 #include "core/PeriodicEvent.h"
 #include "core/RunBeside.h"
 #include "scene/SceneSchema.h"
@@ -13,7 +14,6 @@
 #include <limits>
 #include <sstream>
 #include <tbb/blocked_range.h>
-#include <tbb/parallel_reduce.h>
 
 namespace airtrap {
 
@@ -49,7 +49,7 @@ FrameStats measure(const ParticleSet& fluid) {
         double density = 0.0;
     };
     // Deterministic reduce: the same split and the same order of additions on every run.
-    const Sums sums = tbb::parallel_deterministic_reduce(
+    const Sums sums = parallelDeterministicReduce(
         Range(0, fluid.size(), 4096), Sums{},
         [&](const Range& r, Sums acc) {
             for (std::size_t i = r.begin(); i != r.end(); ++i) {

@@ -1,8 +1,9 @@
 #include "sph/BodySolveCoupling.h"
 
+#include "core/Parallel.h"
+
 #include <algorithm>
 #include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 namespace airtrap {
 namespace {
@@ -126,7 +127,7 @@ void BodySolveCoupling::update(const std::vector<float>& applied,
         motion.velocity += motion.relaxation * residual;
         motion.spin += motion.spinRelaxation * spinResidual;
     }
-    tbb::parallel_for(Range(0, nearWater_.size(), kGrain), [&](const Range& r) {
+    parallelFor(Range(0, nearWater_.size(), kGrain), [&](const Range& r) {
         for (std::size_t n = r.begin(); n != r.end(); ++n)
             boundaryRate[nearWater_[n]] = otherRate_[n] + dynamicRate(nearWater_[n]);
     });
@@ -136,7 +137,7 @@ void BodySolveCoupling::layerImpulses(const std::vector<float>& applied,
                                       const std::vector<float>* alsoApplied) {
     const BoundaryLayer& layer = boundary_->movingLayer();
     const float radius2 = kernel_.supportRadius() * kernel_.supportRadius();
-    tbb::parallel_for(Range(0, layer.size(), kGrain), [&](const Range& r) {
+    parallelFor(Range(0, layer.size(), kGrain), [&](const Range& r) {
         for (std::size_t b = r.begin(); b != r.end(); ++b) {
             if (motionOf_[layer.bodyOf()[b]] < 0)
                 continue;

@@ -1,9 +1,9 @@
 #include "sph/BoundaryVolumes.h"
 
+#include "core/Parallel.h"
 #include "sph/NeighborGrid.h"
 
 #include <cmath>
-#include <tbb/parallel_for.h>
 
 namespace airtrap {
 
@@ -35,7 +35,7 @@ void BoundaryVolumes::compute(BoundaryParticles& particles, const CubicSplineKer
     const float radius2 = kernel.supportRadius() * kernel.supportRadius();
     const float flatVolume =
         static_cast<float>(std::pow(spacing, 3) * flatLatticeKernelSum(kernel, spacing));
-    tbb::parallel_for(std::size_t(0), particles.size(), [&](std::size_t b) {
+    parallelFor(std::size_t(0), particles.size(), [&](std::size_t b) {
         const Vec3f& x = particles.positions[b];
         float sum = 0.0f;
         grid.forEachNeighborRange(x, kernel.supportRadius(),

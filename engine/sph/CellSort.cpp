@@ -1,9 +1,9 @@
 #include "sph/CellSort.h"
 
+#include "core/Parallel.h"
 #include "core/ParallelMax.h"
 
 #include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 #include <utility>
 
 namespace airtrap {
@@ -17,11 +17,11 @@ void permute(std::vector<T>& values, const std::vector<std::uint32_t>& order,
              std::vector<T>& spare) {
     const std::size_t n = order.size();
     spare.resize(n);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kPermuteGrain),
-                      [&](const tbb::blocked_range<std::size_t>& r) {
-                          for (std::size_t s = r.begin(); s != r.end(); ++s)
-                              spare[s] = values[order[s]];
-                      });
+    parallelFor(tbb::blocked_range<std::size_t>(0, n, kPermuteGrain),
+                [&](const tbb::blocked_range<std::size_t>& r) {
+                    for (std::size_t s = r.begin(); s != r.end(); ++s)
+                        spare[s] = values[order[s]];
+                });
     std::swap(values, spare);
 }
 
@@ -35,16 +35,16 @@ void sortByCell(NeighborGrid& grid, ParticleSet& fluid, SortSpares spares, Posit
     const std::size_t n = order.size();
     sorted.resize(n);
     spares.vectors.resize(n);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kPermuteGrain),
-                      [&](const tbb::blocked_range<std::size_t>& r) {
-                          for (std::size_t s = r.begin(); s != r.end(); ++s) {
-                              const Vec3f& x = fluid.positions[order[s]];
-                              spares.vectors[s] = x;
-                              sorted.x[s] = x.x();
-                              sorted.y[s] = x.y();
-                              sorted.z[s] = x.z();
-                          }
-                      });
+    parallelFor(tbb::blocked_range<std::size_t>(0, n, kPermuteGrain),
+                [&](const tbb::blocked_range<std::size_t>& r) {
+                    for (std::size_t s = r.begin(); s != r.end(); ++s) {
+                        const Vec3f& x = fluid.positions[order[s]];
+                        spares.vectors[s] = x;
+                        sorted.x[s] = x.x();
+                        sorted.y[s] = x.y();
+                        sorted.z[s] = x.z();
+                    }
+                });
     std::swap(fluid.positions, spares.vectors);
     spares.vectors.resize(n);
     report.maxSpeed = parallelMax(n, [&](std::size_t s) {

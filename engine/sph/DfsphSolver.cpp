@@ -1,6 +1,7 @@
 #include "sph/DfsphSolver.h"
 
 #include "core/DeterministicSum.h"
+#include "core/Parallel.h"
 #include "core/ParallelMax.h"
 #include "sph/BoundaryNeighbors.h"
 #include "sph/CellSort.h"
@@ -19,8 +20,6 @@
 #include <cstdint>
 #include <limits>
 #include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/parallel_reduce.h>
 
 namespace airtrap {
 
@@ -98,7 +97,7 @@ Fastest findFastest(std::size_t n, Speed&& speed) {
             return a.speed > b.speed ? a : b;
         return a.particle < b.particle ? a : b;
     };
-    return tbb::parallel_reduce(
+    return parallelReduce(
         Range(0, n, kSolveSumGrain), Fastest{},
         [&](const Range& r, Fastest best) {
             for (std::size_t i = r.begin(); i != r.end(); ++i)
@@ -294,7 +293,7 @@ void DfsphSolver::carryWarmStart(std::size_t n) {
     // until the solves.
     const auto carry = [&](std::vector<float>& total, float share) {
         stiffness_.resize(n);
-        tbb::parallel_for(Range(0, n, kSolveGrain), [&](const Range& r) {
+        parallelFor(Range(0, n, kSolveGrain), [&](const Range& r) {
             for (std::size_t s = r.begin(); s != r.end(); ++s) {
                 // Particles emitted since the last step have none.
                 const std::uint32_t from = order[s];
@@ -322,7 +321,7 @@ float DfsphSolver::densityRate(std::size_t i) const {
 }
 
 void DfsphSolver::storeDensityRates(bool interiorOnly) {
-    tbb::parallel_for(Range(0, velocities_.size(), kSolveGrain), [&](const Range& r) {
+    parallelFor(Range(0, velocities_.size(), kSolveGrain), [&](const Range& r) {
         for (std::size_t i = r.begin(); i != r.end(); ++i)
             stiffness_[i] = interiorOnly && !interior_[i] ? 0.0f : densityRate(i);
     });
@@ -373,7 +372,7 @@ DfsphSolver::Residual DfsphSolver::densityResiduals(float dt, const float* densi
 
 void DfsphSolver::applyStiffness(const std::vector<float>& stiffness, std::vector<float>* total) {
     const std::size_t n = velocities_.size();
-    tbb::parallel_for(Range(0, n, kSolveGrain), [&](const Range& r) {
+    parallelFor(Range(0, n, kSolveGrain), [&](const Range& r) {
         for (std::size_t i = r.begin(); i != r.end(); ++i) {
             const float qi = stiffness[i];
             const float* q = stiffness.data();
@@ -393,7 +392,7 @@ DfsphSolver::Outcome DfsphSolver::iterate(Solve solve, float dt, double toleranc
                                           std::vector<float>& total, const float* densities) {
     // The warm start: the stiffness carried over, inside the water only (at the free surface it
     // would push apart water that has since relaxed).
-    tbb::parallel_for(Range(0, total.size(), kSolveGrain), [&](const Range& r) {
+    parallelFor(Range(0, total.size(), kSolveGrain), [&](const Range& r) {
         for (std::size_t i = r.begin(); i != r.end(); ++i)
             if (!interior_[i])
                 total[i] = 0.0f;
@@ -471,7 +470,7 @@ void DfsphSolver::applyNonPressureForces(const ParticleSet& fluid, float dt) {
     const float water = static_cast<float>(settings_.xsphFactor) * mass_;
     const float walls = static_cast<float>(settings_.wallXsphFactor / settings_.restDensity);
     std::copy(velocities_.begin(), velocities_.end(), unsmoothed_.begin());
-    tbb::parallel_for(Range(0, velocities_.size(), kSolveGrain), [&](const Range& r) {
+    parallelFor(Range(0, velocities_.size(), kSolveGrain), [&](const Range& r) {
         for (std::size_t i = r.begin(); i != r.end(); ++i) {
             const Vec4f vi4 = unsmoothed_[i];
             const Vec3f vi = vi4.head<3>();
@@ -563,7 +562,7 @@ void DfsphSolver::computeDensities(ParticleSet& fluid, std::uint64_t, double dt,
                                    StepReport& report) {
     const float step = static_cast<float>(dt);
     applyNonPressureForces(fluid, step);
-    tbb::parallel_for(Range(0, velocities_.size(), kSolveGrain), [&](const Range& r) {
+    parallelFor(Range(0, velocities_.size(), kSolveGrain), [&](const Range& r) {
         for (std::size_t i = r.begin(); i != r.end(); ++i)
             densityTotal_[i] *= step; // κ carried over → q for this step
     });
@@ -581,7 +580,7 @@ void DfsphSolver::computeForces(const ParticleSet&, double dt, StepReport&) {
     if (recordContacts)
         contacts_.resize(n);
     const float step = static_cast<float>(dt);
-    tbb::parallel_for(Range(0, n, kSolveGrain), [&](const Range& r) {
+    parallelFor(Range(0, n, kSolveGrain), [&](const Range& r) {
         for (std::size_t i = r.begin(); i != r.end(); ++i) {
             BoundaryContact::Nearest nearest;
             Vec3f impulse = Vec3f::Zero();
@@ -605,7 +604,7 @@ void DfsphSolver::computeBodyReactions(const ParticleSet&, double dt) {
     reactions_.assign(layer.size(), Vec3d::Zero());
     const float inverseStep = static_cast<float>(1.0 / dt);
     const float walls = static_cast<float>(settings_.wallXsphFactor / settings_.restDensity);
-    tbb::parallel_for(Range(0, layer.size(), kSolveGrain), [&](const Range& r) {
+    parallelFor(Range(0, layer.size(), kSolveGrain), [&](const Range& r) {
         for (std::size_t b = r.begin(); b != r.end(); ++b) {
             if (!boundary_.contactTerms(layer.bodyOf()[b]).dynamic)
                 continue;
@@ -641,7 +640,7 @@ bool DfsphSolver::integrate(ParticleSet& fluid, double dt) {
     const std::size_t n = fluid.size();
     lastTimeStep_ = dt;
     std::atomic<bool> nonFinite{false};
-    tbb::parallel_for(Range(0, n, kSolveGrain), [&](const Range& r) {
+    parallelFor(Range(0, n, kSolveGrain), [&](const Range& r) {
         for (std::size_t i = r.begin(); i != r.end(); ++i) {
             fluid.velocities[i] = velocities_[i].head<3>();
             fluid.positions[i] += step * fluid.velocities[i];

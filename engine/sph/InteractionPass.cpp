@@ -1,12 +1,11 @@
 #include "sph/InteractionPass.h"
 
+#include "core/Parallel.h"
 #include "sph/BoundaryNeighbors.h"
 
 #include <algorithm>
 #include <cmath>
 #include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/parallel_reduce.h>
 
 namespace airtrap {
 
@@ -54,7 +53,7 @@ double InteractionPass::accelerations(const InteractionInputs& in, const Neighbo
                                       std::vector<Vec3f>& accelerations,
                                       ContactRecords* contacts) const {
     const float step = static_cast<float>(dt);
-    return tbb::parallel_reduce(
+    return parallelReduce(
         Range(0, in.fluid.size(), kGrain), 0.0,
         [&](const Range& r, double largest) {
             for (std::size_t i = r.begin(); i != r.end(); ++i) {
@@ -151,7 +150,7 @@ void InteractionPass::bodyReactions(const InteractionInputs& in,
     const float inverseStep = static_cast<float>(1.0 / dt);
     // Each boundary particle sums only its own pairs, in the water's sorted order: parallel and
     // deterministic, like the water's passes.
-    tbb::parallel_for(Range(0, layer.size(), kGrain), [&](const Range& r) {
+    parallelFor(Range(0, layer.size(), kGrain), [&](const Range& r) {
         for (std::size_t b = r.begin(); b != r.end(); ++b) {
             if (!boundary.contactTerms(layer.bodyOf()[b]).dynamic)
                 continue;

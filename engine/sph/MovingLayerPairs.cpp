@@ -1,8 +1,9 @@
 #include "sph/MovingLayerPairs.h"
 
+#include "core/Parallel.h"
+
 #include <algorithm>
 #include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 namespace airtrap {
 namespace {
@@ -26,7 +27,7 @@ void MovingLayerPairs::findWaterNearLayer(const BoundaryLayer& layer, const Neig
     const std::size_t chunks = (positions.size() + kChunk - 1) / kChunk;
     chunkCounts_.resize(std::max(chunkCounts_.size(), chunks));
     chunkWater_.resize(std::max(chunkWater_.size(), chunks));
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks, 1), [&](const auto& r) {
+    parallelFor(tbb::blocked_range<std::size_t>(0, chunks, 1), [&](const auto& r) {
         for (std::size_t c = r.begin(); c != r.end(); ++c) {
             std::vector<std::uint32_t>& counts = chunkCounts_[c];
             std::vector<std::uint32_t>& found = chunkWater_[c];

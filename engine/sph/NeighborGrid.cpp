@@ -1,9 +1,10 @@
 #include "sph/NeighborGrid.h"
 
+#include "core/Parallel.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <tbb/parallel_for.h>
 
 namespace airtrap {
 
@@ -37,7 +38,7 @@ void NeighborGrid::reshape(const Aabb& domain) {
 void NeighborGrid::build(const std::vector<Vec3f>& positions) {
     const std::size_t n = positions.size();
     cellOfPoint_.resize(n);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096), [&](const auto& range) {
+    parallelFor(tbb::blocked_range<std::size_t>(0, n, 4096), [&](const auto& range) {
         for (std::size_t p = range.begin(); p != range.end(); ++p) {
             const Vec3f& x = positions[p];
             if (!contains(x)) {

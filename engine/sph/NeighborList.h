@@ -8,11 +8,12 @@
 // fills a block in particle order, so the lists are the same on any number of threads. Each pair
 // may keep a 16-bit value beside its index (DFSPH keeps its kernel factor's code there: 6 bytes
 // a pair rather than 8, the lists being most of the solver's memory).
+#include "core/Parallel.h"
+
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 #include <vector>
 
 namespace airtrap {
@@ -46,13 +47,12 @@ public:
         const std::size_t blockCount = (particles + kBlockSize - 1) / kBlockSize;
         blocks_.resize(blockCount);
         ends_.resize(particles);
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, blockCount, 1),
-                          [&](const tbb::blocked_range<std::size_t>& r) {
-                              Sink sink;
-                              for (std::size_t b = r.begin(); b != r.end(); ++b)
-                                  fillBlock(b, std::min(particles, (b + 1) * kBlockSize), sink,
-                                            find);
-                          });
+        parallelFor(tbb::blocked_range<std::size_t>(0, blockCount, 1),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                        Sink sink;
+                        for (std::size_t b = r.begin(); b != r.end(); ++b)
+                            fillBlock(b, std::min(particles, (b + 1) * kBlockSize), sink, find);
+                    });
     }
 
     std::uint32_t count(std::size_t i) const { return ends_[i] - begin(i); }

@@ -1,6 +1,7 @@
 #include "sph/WcsphSolver.h"
 
 #include "core/Error.h"
+#include "core/Parallel.h"
 #include "core/ParallelMax.h"
 #include "sph/CellSort.h"
 #include "sph/FrameLanding.h"
@@ -9,7 +10,6 @@
 #include <atomic>
 #include <cmath>
 #include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 namespace airtrap {
 
@@ -124,7 +124,7 @@ void WcsphSolver::shepardFilter(ParticleSet& fluid) {
     const float selfWeight = kernel_.value(0.0f);
     std::vector<float>& filtered = densityRates_; // free until the density pass
     filtered.resize(n);
-    tbb::parallel_for(Range(0, n, kParticleGrain), [&](const Range& r) {
+    parallelFor(Range(0, n, kParticleGrain), [&](const Range& r) {
         for (std::size_t i = r.begin(); i != r.end(); ++i) {
             float weight = selfWeight;
             float weightOverDensity = selfWeight / fluid.densities[i];
@@ -143,7 +143,7 @@ void WcsphSolver::shepardFilter(ParticleSet& fluid) {
 bool WcsphSolver::integrate(ParticleSet& fluid, double dt) {
     const float step = static_cast<float>(dt);
     std::atomic<bool> nonFinite{false};
-    tbb::parallel_for(Range(0, fluid.size(), kParticleGrain), [&](const Range& r) {
+    parallelFor(Range(0, fluid.size(), kParticleGrain), [&](const Range& r) {
         for (std::size_t i = r.begin(); i != r.end(); ++i) {
             // Symplectic Euler: the new velocity moves the particle.
             fluid.velocities[i] += step * accelerations_[i];
