@@ -37,12 +37,42 @@ std::vector<SubgridBubble> loadSubgridBubbles(const std::string& cacheDir,
 
 PostResultLoader::PostResultLoader(QObject* parent) : QObject(parent) {
     qRegisterMetaType<PostFrameResults>();
-    pool_.setMaxThreadCount(1);
+    thread_ = std::thread([this] { serve(); });
 }
 
 PostResultLoader::~PostResultLoader() {
-    pool_.clear();
-    pool_.waitForDone();
+    {
+        const std::lock_guard lock(mutex_);
+        quit_ = true;
+    }
+    arrived_.notify_one();
+    thread_.join();
+}
+
+void PostResultLoader::serve() {
+    for (;;) {
+        Request request;
+        {
+            std::unique_lock lock(mutex_);
+            arrived_.wait(lock, [this] { return quit_ || waiting_.has_value(); });
+            if (quit_)
+                return;
+            request = std::move(*waiting_);
+            waiting_.reset();
+        }
+        if (request.ticket != latest_.load())
+            continue;
+        PostFrameResults results = load(request.cacheDir, request.frame);
+        // The destructor joins this thread, so `this` outlives the queued call's creation; Qt
+        // drops the call if the object is gone by the time it would run.
+        QMetaObject::invokeMethod(
+            this,
+            [this, ticket = request.ticket, frame = request.frame, results = std::move(results)] {
+                if (ticket == latest_.load())
+                    Q_EMIT resultsLoaded(frame, results);
+            },
+            Qt::QueuedConnection);
+    }
 }
 
 PostFrameResults PostResultLoader::load(const std::string& cacheDir, int frame) {
@@ -60,22 +90,12 @@ PostFrameResults PostResultLoader::load(const std::string& cacheDir, int frame) 
 
 void PostResultLoader::request(const QString& cacheDir, int frame) {
     const int ticket = ++latest_;
-    // Older requests still queued are not worth loading: only the newest is shown.
-    pool_.clear();
-    pool_.start([this, ticket, dir = cacheDir.toStdString(), frame] {
-        if (ticket != latest_.load())
-            return;
-        PostFrameResults results = load(dir, frame);
-        // The destructor waits for this task, so `this` outlives the queued call's creation;
-        // Qt drops the call if the object is gone by the time it would run.
-        QMetaObject::invokeMethod(
-            this,
-            [this, ticket, frame, results = std::move(results)] {
-                if (ticket == latest_.load())
-                    Q_EMIT resultsLoaded(frame, results);
-            },
-            Qt::QueuedConnection);
-    });
+    {
+        // An older request still waiting is not worth loading: only the newest is shown.
+        const std::lock_guard lock(mutex_);
+        waiting_ = Request{cacheDir.toStdString(), frame, ticket};
+    }
+    arrived_.notify_one();
 }
 
 } // namespace airtrap

@@ -9,9 +9,13 @@
 
 #include <QObject>
 #include <QString>
-#include <QThreadPool>
 #include <atomic>
+#include <condition_variable>
 #include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
 #include <vector>
 
 namespace airtrap {
@@ -36,10 +40,24 @@ Q_SIGNALS:
     void resultsLoaded(int frame, const airtrap::PostFrameResults& results);
 
 private:
+    struct Request {
+        std::string cacheDir;
+        int frame = 0;
+        int ticket = 0; //!< the value of latest_ when it was asked for
+    };
+
+    //! The loader thread: takes the waiting request, loads it, posts the results.
+    void serve();
     static PostFrameResults load(const std::string& cacheDir, int frame);
 
-    QThreadPool pool_;
+    // A std::thread and a std::mutex rather than a QThreadPool: the thread sanitizer build sees
+    // their order, not that of Qt's pool (docs/TESTING.md "Sanitizers").
+    std::mutex mutex_;
+    std::condition_variable arrived_;
+    std::optional<Request> waiting_; //!< only the newest: a newer request replaces it
+    bool quit_ = false;
     std::atomic<int> latest_{0};
+    std::thread thread_;
 };
 
 } // namespace airtrap
