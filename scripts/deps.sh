@@ -14,8 +14,9 @@ packages=(
     # GUI tests without a screen: virtual X server and Mesa's software OpenGL
     xvfb xauth libgl1-mesa-dri
     # fuzzing and sanitizer builds (scripts/fuzz.sh, test.sh --sanitize): clang with libFuzzer
-    # and the sanitizers' runtimes
-    clang-16 libclang-rt-16-dev
+    # and the sanitizers' runtimes, and LLVM 16's symbolizer for readable reports (Debian's
+    # llvm-symbolizer link points at LLVM 14)
+    clang-16 libclang-rt-16-dev llvm-16
 )
 
 missing=()
