@@ -3,6 +3,7 @@
 #include "core/AtomicFile.h"
 #include "core/Error.h"
 #include "io/BubblePoints.h"
+#include "io/ExportListing.h"
 #include "io/ObjExporter.h"
 #include "io/PlyExporter.h"
 #include "post/FrameSolids.h"
@@ -215,6 +216,11 @@ ExportReport SequenceExporter::run(const std::vector<int>& frames, Interrupter& 
             ++report.framesWritten;
     }
     interrupter.end();
+    // Also after a stop: every file written is whole, and the listing says which they are.
+    ExportListing listing = ExportListing::readOrEmpty(options_.outDir);
+    listing.setScene(scene_);
+    listing.addFiles(report.files, options_.up);
+    listing.write(options_.outDir);
     report.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return report;

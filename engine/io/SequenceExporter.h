@@ -13,6 +13,8 @@
 //        subgrid_0001.obj                   the sub-grid bubbles as small spheres, one object
 //        bodies_0001.obj                    obstacles and rigid bodies, when the scene has any
 //   vdb  fluid_0001.vdb                     surface, density and vel (WaterVolumeFile)
+//        export.json                        what the folder holds: scene, fps, frames, units and
+//                                           each sequence's frames and axes (ExportListing)
 // Metres; y up, or z up on request. Every file is written atomically.
 #include "cache/FrameCache.h"
 #include "core/Interrupter.h"

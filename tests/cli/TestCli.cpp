@@ -464,8 +464,12 @@ private Q_SLOTS:
         QCOMPARE_EXIT(
             runCli(args({"export", cache_, "--format", "ply", "--out", some, "--frames", "2:3"})),
             0);
-        QCOMPARE(std::distance(fs::directory_iterator(some), fs::directory_iterator()), 2);
+        // The two frames asked for, and the listing of what the folder holds.
+        QCOMPARE(std::distance(fs::directory_iterator(some), fs::directory_iterator()), 3);
         QVERIFY(fs::exists(some + "/particles_0002.ply"));
+        const nlohmann::json listing = readJson(some + "/export.json");
+        QCOMPARE(listing.at("sequences").at("particles.ply").at("frames"), nlohmann::json({2, 3}));
+        QCOMPARE(listing.at("frame_end").get<int>(), 4);
     }
 
     void exportSkipsADamagedFrameAndExitsThree() {
@@ -516,6 +520,16 @@ private Q_SLOTS:
             QVERIFY(text.find("\no water\nv ") != std::string::npos);
             QVERIFY(fs::file_size(out + "/fluid_" + digits + ".vdb") > 0);
         }
+        // One listing for both runs, each sequence with its own axes.
+        const nlohmann::json listing = readJson(out + "/export.json");
+        QCOMPARE(listing.at("sequences").at("water.obj").at("frames"),
+                 nlohmann::json({1, 2, 3, 4}));
+        QCOMPARE(listing.at("sequences").at("water.obj").at("up_axis").get<std::string>(),
+                 std::string("y"));
+        QCOMPARE(listing.at("sequences").at("fluid.vdb").at("up_axis").get<std::string>(),
+                 std::string("z"));
+        QCOMPARE(listing.at("sequences").at("fluid.vdb").at("pattern").get<std::string>(),
+                 std::string("fluid_####.vdb"));
         // The closed mode, posted again, says so in the file it writes.
         QCOMPARE_EXIT(runCli(args({"post", cache_, "--set", "surface_mesh.mode=closed"})), 0);
         const std::string closed = path("closed");

@@ -136,8 +136,19 @@ private Q_SLOTS:
         QVERIFY2(run.err.contains("stopped after"), run.err.constData());
         const std::vector<std::string> temporaries = temporariesUnder(out);
         QVERIFY2(temporaries.empty(), temporaries.empty() ? "" : temporaries.front().c_str());
-        for (const std::string& file : filesUnder(out))
+        std::size_t sequenceFiles = 0;
+        for (const std::string& file : filesUnder(out)) {
+            if (file == "export.json")
+                continue; // lists what the stopped run wrote: counted below
+            ++sequenceFiles;
             QVERIFY2(sameContent(out + "/" + file, reference + "/" + file), file.c_str());
+        }
+        // The listing names exactly the files the stopped run left, no frame it did not write.
+        std::size_t listed = 0;
+        const nlohmann::json listing = readJson(out + "/export.json");
+        for (const auto& entry : listing.at("sequences"))
+            listed += entry.at("frames").size();
+        QCOMPARE(listed, sequenceFiles);
         QCOMPARE_EXIT(runCli(export_ + args({out, "-q"})), 0);
         QVERIFY_SAME_AS(out, reference);
     }

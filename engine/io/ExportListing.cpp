@@ -1,0 +1,97 @@
+#include "io/ExportListing.h"
+
+#include "core/AtomicFile.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <set>
+
+namespace airtrap {
+
+namespace {
+
+//! "water_0001.obj" → sequence "water.obj", frame 1, pattern "water_####.obj"; nothing for a
+//! name that is not a frame of a sequence.
+struct SequenceFile {
+    std::string sequence;
+    std::string pattern;
+    int frame = 0;
+};
+
+std::optional<SequenceFile> sequenceFileOf(const std::string& name) {
+    const std::size_t dot = name.rfind('.');
+    const std::size_t underscore = name.rfind('_', dot);
+    if (dot == std::string::npos || underscore == std::string::npos || dot - underscore < 5)
+        return std::nullopt;
+    const std::string digits = name.substr(underscore + 1, dot - underscore - 1);
+    if (!std::all_of(digits.begin(), digits.end(), [](unsigned char c) { return std::isdigit(c); }))
+        return std::nullopt;
+    const std::string stem = name.substr(0, underscore);
+    const std::string ext = name.substr(dot + 1);
+    return SequenceFile{stem + "." + ext, stem + "_####." + ext, std::stoi(digits)};
+}
+
+} // namespace
+
+ExportListing ExportListing::readOrEmpty(const std::string& outDir) {
+    ExportListing listing;
+    const std::string path = outDir + "/" + kFileName;
+    if (!std::filesystem::is_regular_file(path))
+        return listing;
+    try {
+        const std::vector<std::uint8_t> bytes = AtomicFile::read(path);
+        nlohmann::json json = nlohmann::json::parse(bytes.begin(), bytes.end());
+        if (json.is_object() && json.value("format", "") == kFormatName &&
+            json.value("version", 0) == kVersion && json["sequences"].is_object())
+            listing.json_ = std::move(json);
+    } catch (const std::exception&) {
+        // Damaged or unreadable: it is rewritten from what this run writes.
+    }
+    return listing;
+}
+
+void ExportListing::setScene(const Scene& scene) {
+    json_["format"] = kFormatName;
+    json_["version"] = kVersion;
+    json_["scene"] = scene.name;
+    json_["units"] = "m";
+    json_["fps"] = scene.frames.fps;
+    json_["frame_start"] = 1;
+    json_["frame_end"] = scene.frames.endFrame;
+    if (!json_.contains("sequences") || !json_["sequences"].is_object())
+        json_["sequences"] = nlohmann::json::object();
+}
+
+void ExportListing::addFiles(const std::vector<std::string>& names, UpAxis up) {
+    nlohmann::json& sequences = json_["sequences"];
+    if (!sequences.is_object())
+        sequences = nlohmann::json::object();
+    const std::string axis(upAxisName(up));
+    std::map<std::string, std::set<int>> added;
+    std::map<std::string, std::string> patterns;
+    for (const std::string& name : names)
+        if (const std::optional<SequenceFile> file = sequenceFileOf(name)) {
+            added[file->sequence].insert(file->frame);
+            patterns[file->sequence] = file->pattern;
+        }
+    for (const auto& [sequence, frames] : added) {
+        nlohmann::json& entry = sequences[sequence];
+        std::set<int> all = frames;
+        if (entry.is_object() && entry.value("up_axis", "") == axis && entry["frames"].is_array())
+            for (const nlohmann::json& frame : entry["frames"])
+                if (frame.is_number_integer())
+                    all.insert(frame.get<int>());
+        entry = {{"pattern", patterns[sequence]},
+                 {"up_axis", axis},
+                 {"frames", std::vector<int>(all.begin(), all.end())}};
+    }
+}
+
+void ExportListing::write(const std::string& outDir) const {
+    AtomicFile::write(outDir + "/" + kFileName, json_.dump(2) + "\n");
+}
+
+} // namespace airtrap

@@ -1,0 +1,41 @@
+#pragma once
+// `export.json` beside the exported sequences (docs/CLI.md "export"): what an importer needs to
+// load them without guessing (the Blender add-on reads it): the scene's name, fps and frame
+// range, the units, and for each sequence its file pattern, the frames present and its up axis.
+// Every export run adds or replaces the sequences it wrote, so obj, vdb and ply runs into one
+// folder share one listing. It holds no time stamp: the same exports give the same bytes.
+#include "core/UpAxis.h"
+#include "scene/Scene.h"
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace airtrap {
+
+class ExportListing {
+public:
+    static constexpr const char* kFileName = "export.json";
+    static constexpr const char* kFormatName = "airtrap-export";
+    static constexpr int kVersion = 1;
+
+    //! The listing in `outDir`. A missing one, or one that is damaged, foreign or of another
+    //! version, reads as empty: it only describes files, which the next write lists again.
+    static ExportListing readOrEmpty(const std::string& outDir);
+
+    //! The scene the sequences come from: its name, fps and frame range.
+    void setScene(const Scene& scene);
+    //! Records files one run wrote ("water_0001.obj", as ExportReport::files names them), in
+    //! the export's axes. A sequence exported again with the same axes gains the frames; with
+    //! other axes, the frames of the earlier orientation are dropped from the listing.
+    void addFiles(const std::vector<std::string>& names, UpAxis up);
+    //! Writes `outDir`/export.json atomically.
+    void write(const std::string& outDir) const;
+
+    const nlohmann::json& json() const { return json_; }
+
+private:
+    nlohmann::json json_ = nlohmann::json::object();
+};
+
+} // namespace airtrap

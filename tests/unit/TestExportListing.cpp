@@ -1,0 +1,92 @@
+// export.json, the listing an importer reads (io/ExportListing.h): one entry per sequence with
+// its pattern, frames and axes; runs into one folder merge; a damaged listing is rewritten.
+#include "core/AtomicFile.h"
+#include "io/ExportListing.h"
+#include "support/TestMain.h"
+
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace airtrap;
+
+class TestExportListing : public QObject {
+    Q_OBJECT
+
+    static Scene pouring() {
+        Scene scene;
+        scene.name = "pouring";
+        scene.frames.fps = 24.0;
+        scene.frames.endFrame = 90;
+        return scene;
+    }
+
+    static std::vector<int> framesOf(const ExportListing& listing, const std::string& sequence) {
+        return listing.json().at("sequences").at(sequence).at("frames").get<std::vector<int>>();
+    }
+
+private Q_SLOTS:
+    void eachSequenceListsItsPatternFramesAndAxes() {
+        ExportListing listing;
+        listing.setScene(pouring());
+        listing.addFiles(
+            {"water_0001.obj", "bubbles_0001.obj", "water_0002.obj", "water_10000.obj"}, UpAxis::Z);
+        const nlohmann::json& json = listing.json();
+        QCOMPARE(json.at("format").get<std::string>(), std::string("airtrap-export"));
+        QCOMPARE(json.at("scene").get<std::string>(), std::string("pouring"));
+        QCOMPARE(json.at("fps").get<double>(), 24.0);
+        QCOMPARE(json.at("frame_start").get<int>(), 1);
+        QCOMPARE(json.at("frame_end").get<int>(), 90);
+        QCOMPARE(json.at("units").get<std::string>(), std::string("m"));
+        const nlohmann::json& water = json.at("sequences").at("water.obj");
+        QCOMPARE(water.at("pattern").get<std::string>(), std::string("water_####.obj"));
+        QCOMPARE(water.at("up_axis").get<std::string>(), std::string("z"));
+        QCOMPARE(framesOf(listing, "water.obj"), (std::vector<int>{1, 2, 10000}));
+        QCOMPARE(framesOf(listing, "bubbles.obj"), (std::vector<int>{1}));
+    }
+
+    void namesThatAreNoFrameOfASequenceAreLeftOut() {
+        ExportListing listing;
+        listing.setScene(pouring());
+        listing.addFiles({"notes.txt", "water.obj", "water_01a2.obj", "export.json"}, UpAxis::Y);
+        QVERIFY(listing.json().at("sequences").empty());
+    }
+
+    void runsIntoOneFolderMergeAndTheLastAxesWin() {
+        QTemporaryDir out;
+        const std::string dir = out.path().toStdString();
+        ExportListing first = ExportListing::readOrEmpty(dir);
+        first.setScene(pouring());
+        first.addFiles({"water_0001.obj", "water_0002.obj", "fluid_0001.vdb"}, UpAxis::Y);
+        first.write(dir);
+
+        ExportListing second = ExportListing::readOrEmpty(dir);
+        second.setScene(pouring());
+        second.addFiles({"water_0003.obj"}, UpAxis::Y);
+        second.addFiles({"fluid_0002.vdb"}, UpAxis::Z);
+        second.write(dir);
+
+        const ExportListing read = ExportListing::readOrEmpty(dir);
+        QCOMPARE(framesOf(read, "water.obj"), (std::vector<int>{1, 2, 3}));
+        // The earlier y-up volume is no longer what the listing describes.
+        QCOMPARE(framesOf(read, "fluid.vdb"), (std::vector<int>{2}));
+        QCOMPARE(read.json().at("sequences").at("fluid.vdb").at("up_axis").get<std::string>(),
+                 std::string("z"));
+    }
+
+    void aDamagedOrForeignListingReadsAsEmpty() {
+        QTemporaryDir out;
+        const std::string dir = out.path().toStdString();
+        const std::string path = dir + "/export.json";
+        for (const std::string& text : {std::string("{\"format\": \"airtrap-export\", \"vers"),
+                                        std::string("{\"format\": \"other\", \"sequences\": {}}"),
+                                        std::string("[1, 2, 3]")}) {
+            AtomicFile::write(path, text);
+            const ExportListing listing = ExportListing::readOrEmpty(dir);
+            QVERIFY2(listing.json().empty(), text.c_str());
+        }
+        QVERIFY(ExportListing::readOrEmpty(dir + "/absent").json().empty());
+    }
+};
+
+AIRTRAP_TEST_APPLESS(TestExportListing)
+#include "TestExportListing.moc"
