@@ -17,6 +17,8 @@ packages=(
     # and the sanitizers' runtimes, and LLVM 16's symbolizer for readable reports (Debian's
     # llvm-symbolizer link points at LLVM 14)
     clang-16 libclang-rt-16-dev llvm-16
+    # the Blender add-on's tests (tools/blender, label blender): Blender 3.4, run headless
+    blender
 )
 
 missing=()

@@ -1,0 +1,56 @@
+# Airtrap bake importer for Blender: File ▸ Import ▸ Airtrap bake (docs/BLENDER.md).
+bl_info = {
+    "name": "Airtrap bake importer",
+    "author": "Airtrap",
+    "version": (0, 1, 0),
+    "blender": (3, 4, 0),
+    "location": "File > Import > Airtrap bake",
+    "description": "Imports an Airtrap export folder: water, bubbles, volume and bodies "
+                   "following the frame",
+    "category": "Import-Export",
+}
+
+import bpy
+from bpy.props import StringProperty
+from bpy_extras.io_utils import ImportHelper
+
+from . import bake_listing
+from . import importer
+
+
+class ImportAirtrapBake(bpy.types.Operator, ImportHelper):
+    """Import the sequences of an Airtrap export folder"""
+    bl_idname = "import_scene.airtrap_bake"
+    bl_label = "Import Airtrap bake"
+    bl_options = {'REGISTER', 'UNDO'}
+
+    filename_ext = ""
+    directory: StringProperty(subtype='DIR_PATH')
+    filter_glob: StringProperty(default="export.json", options={'HIDDEN'})
+
+    def execute(self, context):
+        folder = importer.folder_of(self.directory or self.filepath)
+        try:
+            report = importer.import_bake(folder, context)
+        except bake_listing.ListingError as error:
+            print("Airtrap import: %s" % error)
+            self.report({'ERROR'}, str(error))
+            return {'CANCELLED'}
+        for warning in report.warnings:
+            self.report({'WARNING'}, warning)
+        self.report({'INFO'}, "Airtrap bake imported: %s" % ", ".join(sorted(report.objects)))
+        return {'FINISHED'}
+
+
+def menu_entry(self, context):
+    self.layout.operator(ImportAirtrapBake.bl_idname, text="Airtrap bake")
+
+
+def register():
+    bpy.utils.register_class(ImportAirtrapBake)
+    bpy.types.TOPBAR_MT_file_import.append(menu_entry)
+
+
+def unregister():
+    bpy.types.TOPBAR_MT_file_import.remove(menu_entry)
+    bpy.utils.unregister_class(ImportAirtrapBake)
