@@ -2,7 +2,8 @@
 # every format, Z up as Blender is.
 #   cmake -DCLI=<airtrap-cli> -DSCENE=<pouring.json> -DOUT=<folder> -P MakeExport.cmake
 cmake_minimum_required(VERSION 3.25)
-file(REMOVE_RECURSE ${OUT})
+# Only its own folders: the other Blender tests write beside them.
+file(REMOVE_RECURSE ${OUT}/cache ${OUT}/export)
 function(run)
     execute_process(COMMAND ${CLI} ${ARGN} -q RESULT_VARIABLE result ERROR_VARIABLE errors)
     if(NOT result EQUAL 0)

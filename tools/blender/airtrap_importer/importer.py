@@ -49,32 +49,43 @@ def _frame_mesh(objects, name):
     return target
 
 
-def import_mesh_sequence(sequence, name, parent, report, material=None, smooth=False):
-    """`sequence` (OBJ) as the object `name` following the frame; a missing file is reported
-    and its frame shows nothing."""
+def _import_sequence(sequence, name, parent, report, frame_object, spheres_material=None):
+    """`sequence` as the object `name` following the frame: `frame_object(frame, path)` makes
+    each frame's object (`path` None when its file is missing, which is reported: that frame shows
+    nothing)."""
     present, missing = sequence.present_frames()
     for path in missing:
         report.warn("%s is missing: its frame is skipped" % path)
     first, last = sequence.frames[0], sequence.frames[-1]
     frames = frame_picker.hidden_collection(name + " frames", parent)
     for frame in range(first, last + 1):
-        object_name = frame_picker.frame_object_name(sequence.stem, frame)
+        obj = frame_object(frame, sequence.path(frame) if frame in present else None)
+        obj.name = frame_picker.frame_object_name(sequence.key.replace(".", "_"), frame)
+        frames.objects.link(obj)
+    return frame_picker.picking_object(name, parent, frames, first, "Airtrap " + name.lower(),
+                                       spheres_material)
+
+
+def import_mesh_sequence(sequence, name, parent, report, material=None, smooth=False):
+    """`sequence` (OBJ) as a mesh object following the frame."""
+    def frame_object(frame, path):
         objects = []
-        if frame in present:
+        if path is not None:
             try:
-                objects = _import_obj_frame(sequence.path(frame), sequence.up_axis)
+                objects = _import_obj_frame(path, sequence.up_axis)
             except RuntimeError as error:
                 report.warn("%s cannot be read (%s): its frame is skipped"
-                            % (sequence.path(frame), str(error).strip()))
-        obj = _frame_mesh(objects, object_name)
-        frames.objects.link(obj)
+                            % (path, str(error).strip()))
+        obj = _frame_mesh(objects, "%s %d" % (name, frame))
         mesh = obj.data
         if smooth and mesh.polygons:
             mesh.polygons.foreach_set("use_smooth", [True] * len(mesh.polygons))
         if material is not None:
             mesh.materials.clear()
             mesh.materials.append(material)
-    return frame_picker.picking_object(name, parent, frames, first, "Airtrap " + name.lower())
+        return obj
+
+    return _import_sequence(sequence, name, parent, report, frame_object)
 
 
 def _to_blender_axes(x, y, z, up_axis):
@@ -105,24 +116,18 @@ def _points_object(columns, name, up_axis):
 
 
 def import_point_sequence(sequence, name, parent, report, material):
-    """`sequence` (PLY points) as spheres of radius `pscale` following the frame; a missing or
-    unreadable file is reported and its frame shows none."""
-    present, missing = sequence.present_frames()
-    for path in missing:
-        report.warn("%s is missing: its frame is skipped" % path)
-    first, last = sequence.frames[0], sequence.frames[-1]
-    frames = frame_picker.hidden_collection(name + " frames", parent)
-    for frame in range(first, last + 1):
+    """`sequence` (PLY points) as spheres of radius `pscale` following the frame."""
+    def frame_object(frame, path):
         columns = {}
-        if frame in present:
+        if path is not None:
             try:
-                columns = ply_points.read_points(sequence.path(frame))
+                columns = ply_points.read_points(path)
             except (OSError, ply_points.PlyError) as error:
                 report.warn("%s: its frame is skipped" % error)
-        frames.objects.link(_points_object(
-            columns, frame_picker.frame_object_name(sequence.stem, frame), sequence.up_axis))
-    return frame_picker.picking_object(name, parent, frames, first, "Airtrap " + name.lower(),
-                                       spheres_material=material)
+        return _points_object(columns, "%s %d" % (name, frame), sequence.up_axis)
+
+    return _import_sequence(sequence, name, parent, report, frame_object,
+                            spheres_material=material)
 
 
 def import_bake(directory, context):
