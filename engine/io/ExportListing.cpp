@@ -53,7 +53,7 @@ ExportListing ExportListing::readOrEmpty(const std::string& outDir) {
     return listing;
 }
 
-void ExportListing::setScene(const Scene& scene) {
+void ExportListing::setScene(const Scene& scene, UpAxis up) {
     json_["format"] = kFormatName;
     json_["version"] = kVersion;
     json_["scene"] = scene.name;
@@ -61,6 +61,15 @@ void ExportListing::setScene(const Scene& scene) {
     json_["fps"] = scene.frames.fps;
     json_["frame_start"] = 1;
     json_["frame_end"] = scene.frames.endFrame;
+    // The turn to z up swaps and negates an axis, so the corners are sorted again.
+    const Vec3d a = toExportAxes(scene.container.min, up);
+    const Vec3d b = toExportAxes(scene.container.max, up);
+    // Adding +0 turns the −0 a negated axis gives into 0, which reads better in the file.
+    const Vec3d low = a.cwiseMin(b) + Vec3d::Zero();
+    const Vec3d high = a.cwiseMax(b) + Vec3d::Zero();
+    json_["container"] = {{"min", {low.x(), low.y(), low.z()}},
+                          {"max", {high.x(), high.y(), high.z()}},
+                          {"up_axis", std::string(upAxisName(up))}};
     if (!json_.contains("sequences") || !json_["sequences"].is_object())
         json_["sequences"] = nlohmann::json::object();
 }

@@ -1,7 +1,8 @@
 #pragma once
 // `export.json` beside the exported sequences (docs/CLI.md "export"): what an importer needs to
 // load them without guessing (the Blender add-on reads it): the scene's name, fps and frame
-// range, the units, and for each sequence its file pattern, the frames present and its up axis.
+// range, the units, the container's box, and for each sequence its file pattern, the frames
+// present and its up axis.
 // Every export run adds or replaces the sequences it wrote, so obj, vdb and ply runs into one
 // folder share one listing. It holds no time stamp: the same exports give the same bytes.
 #include "core/UpAxis.h"
@@ -23,8 +24,9 @@ public:
     //! version, reads as empty: it only describes files, which the next write lists again.
     static ExportListing readOrEmpty(const std::string& outDir);
 
-    //! The scene the sequences come from: its name, fps and frame range.
-    void setScene(const Scene& scene);
+    //! The scene the sequences come from: its name, fps and frame range, and its container's
+    //! box in the axes `up` (an importer frames its camera and puts its floor by it).
+    void setScene(const Scene& scene, UpAxis up);
     //! Records files one run wrote ("water_0001.obj", as ExportReport::files names them), in
     //! the export's axes. A sequence exported again with the same axes gains the frames; with
     //! other axes, the frames of the earlier orientation are dropped from the listing.

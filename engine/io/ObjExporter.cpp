@@ -4,6 +4,7 @@
 #include "io/PlyHeader.h"
 
 #include <charconv>
+#include <string>
 #include <string_view>
 
 namespace airtrap {
@@ -65,10 +66,16 @@ std::string ObjExporter::encode(const std::vector<NamedMesh>& objects, UpAxis up
     for (const std::string& comment : comments)
         text += "# " + oneLine(comment) + "\n";
     std::size_t firstVertex = 0;
+    std::size_t triangles = 0;
     for (const NamedMesh& object : objects) {
         appendObject(text, object, up, firstVertex);
         firstVertex += object.mesh.vertices.size();
+        triangles += object.mesh.triangles.size();
     }
+    // Importers read a cut-off file without a word; this last line tells a reader that the file
+    // is whole and what it holds (the Blender add-on checks it, docs/BLENDER.md).
+    text += "# end: " + std::to_string(firstVertex) + " vertices, " + std::to_string(triangles) +
+            " triangles\n";
     return text;
 }
 

@@ -218,7 +218,7 @@ ExportReport SequenceExporter::run(const std::vector<int>& frames, Interrupter& 
     interrupter.end();
     // Also after a stop: every file written is whole, and the listing says which they are.
     ExportListing listing = ExportListing::readOrEmpty(options_.outDir);
-    listing.setScene(scene_);
+    listing.setScene(scene_, options_.up);
     listing.addFiles(report.files, options_.up);
     listing.write(options_.outDir);
     report.seconds =

@@ -1,7 +1,11 @@
 # Run by ctest (label blender) as
 #   blender -b --factory-startup --python-exit-code 1 --python bad_folders.py -- EXPORT_DIR CACHE_DIR WORK_DIR
-# Folders the import cannot take say why, with no traceback; a missing frame is named and skipped
-# while the rest imports. Exits non-zero on the first failure, naming it.
+# Folders the import cannot take say why, with no traceback; a missing frame, a cut-off OBJ or
+# PLY, a missing export.json and a frame range that does not match are named in a warning while
+# the rest imports. Exits non-zero on the first failure, naming it.
+import contextlib
+import io
+import json
 import os
 import shutil
 import sys
@@ -22,14 +26,48 @@ def fail(text):
 
 
 def import_folder(folder):
-    """The operator's result; its printed messages land in the console, which ctest keeps."""
+    """The operator's result; what it printed (its warnings) is kept in `messages` and shown."""
     bpy.ops.wm.read_factory_settings(use_empty=True)
     addon_utils.enable("airtrap_importer", default_set=True)
+    console = io.StringIO()
     try:
-        return bpy.ops.import_scene.airtrap_bake(directory=folder)
+        with contextlib.redirect_stdout(console):
+            return bpy.ops.import_scene.airtrap_bake(directory=folder, preview_scene=False)
     except RuntimeError as error:  # the operator's ERROR report is raised in background mode
         messages.append(str(error))
         return {'CANCELLED'}
+    finally:
+        messages.extend(console.getvalue().splitlines())
+        print(console.getvalue(), end="")
+
+
+def copy_of_export(name):
+    folder = os.path.join(work_dir, name)
+    shutil.rmtree(folder, ignore_errors=True)
+    shutil.copytree(export_dir, folder)
+    return folder
+
+
+def imports_warning(folder, fragments):
+    messages.clear()
+    if import_folder(folder) != {'FINISHED'}:
+        fail("%s did not import: %s" % (folder, messages))
+    for fragment in fragments:
+        if not any(fragment in message for message in messages):
+            fail("importing %s did not say %r: %s" % (folder, fragment, messages))
+
+
+def water_vertices(frame):
+    bpy.context.scene.frame_set(frame)
+    water = bpy.data.objects.get("Water")
+    return len(water.evaluated_get(bpy.context.evaluated_depsgraph_get()).data.vertices)
+
+
+def cut_short(path, keep):
+    with open(path, "rb") as file:
+        data = file.read()
+    with open(path, "wb") as file:
+        file.write(data[:int(len(data) * keep)])
 
 
 def refused_saying(folder, fragment):
@@ -58,18 +96,61 @@ with open(os.path.join(cut, "export.json"), "w") as file:
 refused_saying(cut, "cannot be read")
 
 # A frame whose file is gone: named, skipped (it shows no water), the others import.
-holed = os.path.join(work_dir, "holed")
-shutil.rmtree(holed, ignore_errors=True)
-shutil.copytree(export_dir, holed)
+holed = copy_of_export("holed")
 os.remove(os.path.join(holed, "water_0003.obj"))
-if import_folder(holed) != {'FINISHED'}:
-    fail("a folder with one missing frame did not import")
-water = bpy.data.objects.get("Water")
-scene = bpy.context.scene
-for frame, empty_expected in ((2, False), (3, True), (4, False)):
-    scene.frame_set(frame)
-    mesh = water.evaluated_get(bpy.context.evaluated_depsgraph_get()).data
-    if (len(mesh.vertices) == 0) != empty_expected:
-        fail("frame %d has %d water vertices" % (frame, len(mesh.vertices)))
+imports_warning(holed, [os.path.join(holed, "water_0003.obj") + " is missing"])
+if [water_vertices(f) == 0 for f in (2, 3, 4)] != [False, True, False]:
+    fail("with water_0003.obj missing, frames 2, 3, 4 have %s water vertices"
+         % [water_vertices(f) for f in (2, 3, 4)])
 print("missing water_0003.obj skipped, frames 2 and 4 imported")
+
+# Cut-off files: the OBJ's frame shows no water, the PLY's no bubbles; both are named.
+truncated = copy_of_export("truncated")
+cut_short(os.path.join(truncated, "water_0005.obj"), 0.66)
+cut_short(os.path.join(truncated, "bubbles_0015.ply"), 0.9)
+imports_warning(truncated, [os.path.join(truncated, "water_0005.obj") + " is cut short",
+                            os.path.join(truncated, "bubbles_0015.ply") + " is cut short"])
+if [water_vertices(f) == 0 for f in (4, 5, 6)] != [False, True, False]:
+    fail("with water_0005.obj cut short, frames 4, 5, 6 have %s water vertices"
+         % [water_vertices(f) for f in (4, 5, 6)])
+print("cut-off water_0005.obj and bubbles_0015.ply named and skipped")
+
+# No export.json: the sequences are found by their file names, with a warning.
+unlisted = copy_of_export("unlisted")
+os.remove(os.path.join(unlisted, "export.json"))
+imports_warning(unlisted, [unlisted + " has no export.json: frames 1–15 read from the file "
+                                      "names, Z up"])
+if (bpy.context.scene.frame_start, bpy.context.scene.frame_end) != (1, 15) \
+        or water_vertices(15) == 0:
+    fail("without export.json the scene plays %d–%d with %d water vertices at 15"
+         % (bpy.context.scene.frame_start, bpy.context.scene.frame_end, water_vertices(15)))
+print("no export.json: imported from the file names")
+
+# A listing whose range does not match its sequences: said, and the scene plays them all.
+mismatched = copy_of_export("mismatched")
+listing_path = os.path.join(mismatched, "export.json")
+with open(listing_path) as file:
+    listing = json.load(file)
+listing["frame_end"] = 12
+listing["sequences"]["bubbles.ply"]["frames"] = list(range(1, 11))
+with open(listing_path, "w") as file:
+    json.dump(listing, file)
+imports_warning(mismatched, ["gives the range 1–12, but ", "water.obj list frames 1–15: the "
+                                                             "scene plays 1–15",
+                             "bubbles.ply has frames 1–10 of 1–15: it shows nothing on the "
+                             "others"])
+if bpy.context.scene.frame_end != 15 or water_vertices(15) == 0:
+    fail("the mismatched listing plays to %d" % bpy.context.scene.frame_end)
+# bubbles_0015.ply has bubbles (BlenderImport checks), but the listing stops the sequence at 10.
+bubbles = bpy.data.objects.get("Bubbles")
+if len(bubbles.evaluated_get(bpy.context.evaluated_depsgraph_get()).data.vertices) != 0:
+    fail("Bubbles shows something at frame 15, after its last listed frame")
+print("mismatched frame range said, frames 1–15 imported")
+
+# A listing with no sequences says so.
+bare = os.path.join(work_dir, "bare")
+os.makedirs(bare, exist_ok=True)
+with open(os.path.join(bare, "export.json"), "w") as file:
+    json.dump({"format": "airtrap-export", "version": 1, "sequences": {}}, file)
+refused_saying(bare, "lists no sequences")
 print("PASS")

@@ -1,12 +1,17 @@
 # Run by ctest (label blender) as
-#   blender -b --factory-startup --python import_bake.py -- EXPORT_DIR WORK_DIR
-# The add-on enables; the import makes a Water object whose mesh at the first and last frames has
-# exactly the vertices and faces of water_000N.obj, and Bubbles whose sphere instances are the
-# points of bubbles_000N.ply with their pscale as radius; saved, the file plays the water in a
-# fresh Blender without the add-on. Exits non-zero on the first failure, naming it.
+#   blender -b --factory-startup --python import_bake.py -- EXPORT_DIR WORK_DIR BODIES_EXPORT_DIR
+# The add-on enables; the default import makes a Water object whose mesh at the first and last
+# frames has exactly the vertices and faces of water_000N.obj, Bubbles whose spheres are the
+# points of bubbles_000N.ply with their pscale as radius and their velocity on every vertex, and
+# a preview scene; saved, the file plays the water in a fresh Blender without the add-on. With
+# the other options the bubbles are the meshes of bubbles_000N.obj and the volume has the
+# density grid; the buoyancy export gives Bodies with the counts of bodies_000N.obj. Exits
+# non-zero on the first failure, naming it.
+import math
 import os
 import subprocess
 import sys
+from array import array
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "tools", "blender"))
@@ -16,8 +21,9 @@ import bpy  # noqa: E402
 
 from airtrap_importer import ply_points  # noqa: E402
 
-
-export_dir, work_dir = (os.path.abspath(a) for a in sys.argv[sys.argv.index("--") + 1:][:2])
+export_dir, work_dir, bodies_dir = (os.path.abspath(a)
+                                    for a in sys.argv[sys.argv.index("--") + 1:][:3])
+SPHERE_VERTICES = 42  # an icosphere of two subdivisions
 
 
 def fail(text):
@@ -36,49 +42,95 @@ def obj_counts(path):
     return vertices, faces
 
 
-def evaluated_counts(obj, frame):
+def evaluated_mesh(obj, frame):
     bpy.context.scene.frame_set(frame)
-    mesh = obj.evaluated_get(bpy.context.evaluated_depsgraph_get()).data
-    return len(mesh.vertices), len(mesh.polygons)
+    return obj.evaluated_get(bpy.context.evaluated_depsgraph_get()).data
 
 
-bpy.ops.wm.read_factory_settings(use_empty=True)
-if addon_utils.enable("airtrap_importer", default_set=True) is None:
-    fail("the add-on does not enable")
-if bpy.ops.import_scene.airtrap_bake(directory=export_dir) != {'FINISHED'}:
-    fail("the import did not finish")
-water = bpy.data.objects.get("Water")
-if water is None:
-    fail("no Water object")
+def import_bake(folder, **options):
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    if addon_utils.enable("airtrap_importer", default_set=True) is None:
+        fail("the add-on does not enable")
+    if bpy.ops.import_scene.airtrap_bake(directory=folder, **options) != {'FINISHED'}:
+        fail("the import of %s with %s did not finish" % (folder, options))
+
+
+def object_named(name):
+    obj = bpy.data.objects.get(name)
+    if obj is None:
+        fail("no %s object (the scene has %s)" % (name, sorted(bpy.data.objects.keys())))
+    return obj
+
+
+def check_mesh_sequence(obj, folder, stem, frames):
+    for frame in frames:
+        expected = obj_counts(os.path.join(folder, "%s_%04d.obj" % (stem, frame)))
+        mesh = evaluated_mesh(obj, frame)
+        got = (len(mesh.vertices), len(mesh.polygons))
+        if got != expected:
+            fail("frame %d: %s has %s vertices and faces, %s_%04d.obj %s"
+                 % (frame, obj.name, got, stem, frame, expected))
+        print("frame %d: %s has %d vertices, %d faces, as in the OBJ"
+              % ((frame, obj.name) + got))
+
+
+def sphere_blocks(mesh):
+    """Per realised sphere: its centre, radius and the velocity on its vertices."""
+    count = len(mesh.vertices)
+    positions = array('f', [0.0]) * (3 * count)
+    mesh.vertices.foreach_get("co", positions)
+    velocities = array('f', [0.0]) * (3 * count)
+    mesh.attributes["velocity"].data.foreach_get("vector", velocities)
+    blocks = []
+    for first in range(0, count, SPHERE_VERTICES):
+        points = [positions[3 * v:3 * v + 3] for v in range(first, first + SPHERE_VERTICES)]
+        centre = [sum(p[axis] for p in points) / len(points) for axis in range(3)]
+        radius = math.dist(points[0], centre)
+        blocks.append((centre, radius, tuple(velocities[3 * first:3 * first + 3])))
+    return blocks
+
+
+def check_spheres(bubbles, frame):
+    columns = ply_points.read_points(os.path.join(export_dir, "bubbles_%04d.ply" % frame))
+    mesh = evaluated_mesh(bubbles, frame)
+    points = len(columns.get("pscale", []))
+    if frame == last and points == 0:
+        fail("bubbles_%04d.ply has no bubbles: the check would prove nothing" % frame)
+    if len(mesh.vertices) != SPHERE_VERTICES * points:
+        fail("frame %d: Bubbles has %d vertices, not %d spheres of %d"
+             % (frame, len(mesh.vertices), points, SPHERE_VERTICES))
+    if points == 0:
+        return
+    for i, (centre, radius, velocity) in enumerate(sphere_blocks(mesh)):
+        at = (columns["x"][i], columns["y"][i], columns["z"][i])
+        moving = (columns["vx"][i], columns["vy"][i], columns["vz"][i])
+        pscale = columns["pscale"][i]
+        if math.dist(centre, at) > 1e-4 or abs(radius - pscale) > 1e-4 * max(pscale, 1e-3) \
+                or math.dist(velocity, moving) > 1e-5 * max(1.0, math.hypot(*moving)):
+            fail("frame %d, bubble %d: sphere at %s radius %g velocity %s; the PLY says %s, "
+                 "pscale %g, velocity %s" % (frame, i, centre, radius, velocity, at, pscale,
+                                             moving))
+    print("frame %d: %d bubble spheres at the points, radius = pscale, velocity = (vx, vy, vz)"
+          % (frame, points))
+
+
+# The default import: spheres, no volume, a preview scene.
+import_bake(export_dir)
 scene = bpy.context.scene
 first, last = scene.frame_start, scene.frame_end
+if (first, last) != (1, 15):
+    fail("the scene plays %d–%d, the export 1–15" % (first, last))
+check_mesh_sequence(object_named("Water"), export_dir, "water", (first, last))
+bubbles = object_named("Bubbles")
 for frame in (first, last):
-    expected = obj_counts(os.path.join(export_dir, "water_%04d.obj" % frame))
-    got = evaluated_counts(water, frame)
-    if got != expected:
-        fail("frame %d: Water has %s vertices and faces, water_%04d.obj %s"
-             % (frame, got, frame, expected))
-    print("frame %d: %d vertices, %d faces, as in the OBJ" % ((frame,) + got))
-
-bubbles = bpy.data.objects.get("Bubbles")
-if bubbles is None:
-    fail("no Bubbles object")
-for frame in (first, last):
-    radii = sorted(ply_points.read_points(
-        os.path.join(export_dir, "bubbles_%04d.ply" % frame)).get("pscale", []))
-    scene.frame_set(frame)
-    depsgraph = bpy.context.evaluated_depsgraph_get()
-    scales = sorted(instance.matrix_world.to_scale()[0]
-                    for instance in depsgraph.object_instances
-                    if instance.is_instance and instance.parent is not None
-                    and instance.parent.original == bubbles)
-    if frame == last and not radii:
-        fail("bubbles_%04d.ply has no bubbles: the check would prove nothing" % frame)
-    if len(scales) != len(radii) or any(abs(a - b) > 1e-6 * max(1.0, b)
-                                        for a, b in zip(scales, radii)):
-        fail("frame %d: %d bubble spheres with radii %s, bubbles_%04d.ply has %d with %s"
-             % (frame, len(scales), scales[:5], frame, len(radii), radii[:5]))
-    print("frame %d: %d bubble spheres, radii = pscale" % (frame, len(scales)))
+    check_spheres(bubbles, frame)
+object_named("Sub-grid bubbles")
+if scene.camera is None or scene.render.engine != 'CYCLES' or scene.world is None:
+    fail("no preview scene: camera %s, engine %s, world %s"
+         % (scene.camera, scene.render.engine, scene.world))
+for name in ("Airtrap sun", "Airtrap floor", "Airtrap tank"):
+    object_named(name)
+print("preview scene: camera, sun, sky, floor, tank, Cycles")
 
 saved = os.path.join(work_dir, "imported.blend")
 bpy.ops.wm.save_as_mainfile(filepath=saved)
@@ -94,4 +146,24 @@ if line is None or tuple(int(x) for x in line.split()[1:]) != expected:
     fail("in a fresh Blender the Water at frame %d is %s, expected %s"
          % (last, line, expected))
 print("fresh Blender without the add-on: frame %d matches" % last)
+
+# The other options: oscillating bubble meshes, the volume, no preview.
+import_bake(export_dir, bubble_shape='MESHES', import_volume=True, preview_scene=False)
+check_mesh_sequence(object_named("Bubbles"), export_dir, "bubbles", (first, last))
+volume = object_named("Water volume")
+bpy.context.scene.frame_set(last)
+volume.data.grids.load()
+grids = sorted(grid.name for grid in volume.data.grids)
+if "density" not in grids or volume.data.velocity_grid != "vel" or \
+        volume.data.grids.frame_filepath != os.path.join(export_dir, "fluid_%04d.vdb" % last):
+    fail("the volume at frame %d reads %s with grids %s, velocity grid %r"
+         % (last, volume.data.grids.frame_filepath, grids, volume.data.velocity_grid))
+print("volume at frame %d: %s, grids %s" % (last, os.path.basename(
+    volume.data.grids.frame_filepath), ", ".join(grids)))
+if bpy.context.scene.camera is not None or bpy.data.objects.get("Airtrap floor") is not None:
+    fail("preview_scene=False made a preview scene")
+
+# Bodies, from three frames of the buoyancy sample.
+import_bake(bodies_dir)
+check_mesh_sequence(object_named("Bodies"), bodies_dir, "bodies", (1, 3))
 print("PASS")

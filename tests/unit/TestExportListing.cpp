@@ -17,6 +17,8 @@ class TestExportListing : public QObject {
         scene.name = "pouring";
         scene.frames.fps = 24.0;
         scene.frames.endFrame = 90;
+        scene.container.min = Vec3d(0.0, 0.0, 0.0);
+        scene.container.max = Vec3d(1.0, 0.5, 2.0);
         return scene;
     }
 
@@ -27,7 +29,7 @@ class TestExportListing : public QObject {
 private Q_SLOTS:
     void eachSequenceListsItsPatternFramesAndAxes() {
         ExportListing listing;
-        listing.setScene(pouring());
+        listing.setScene(pouring(), UpAxis::Z);
         listing.addFiles(
             {"water_0001.obj", "bubbles_0001.obj", "water_0002.obj", "water_10000.obj"}, UpAxis::Z);
         const nlohmann::json& json = listing.json();
@@ -37,6 +39,11 @@ private Q_SLOTS:
         QCOMPARE(json.at("frame_start").get<int>(), 1);
         QCOMPARE(json.at("frame_end").get<int>(), 90);
         QCOMPARE(json.at("units").get<std::string>(), std::string("m"));
+        // The tank from (0, 0, 0) to (1, 0.5, 2), y up, is (0, -2, 0) to (1, 0, 0.5) z up.
+        const nlohmann::json& container = json.at("container");
+        QCOMPARE(container.at("min").get<std::vector<double>>(), (std::vector<double>{0, -2, 0}));
+        QCOMPARE(container.at("max").get<std::vector<double>>(), (std::vector<double>{1, 0, 0.5}));
+        QCOMPARE(container.at("up_axis").get<std::string>(), std::string("z"));
         const nlohmann::json& water = json.at("sequences").at("water.obj");
         QCOMPARE(water.at("pattern").get<std::string>(), std::string("water_####.obj"));
         QCOMPARE(water.at("up_axis").get<std::string>(), std::string("z"));
@@ -46,7 +53,7 @@ private Q_SLOTS:
 
     void namesThatAreNoFrameOfASequenceAreLeftOut() {
         ExportListing listing;
-        listing.setScene(pouring());
+        listing.setScene(pouring(), UpAxis::Y);
         listing.addFiles({"notes.txt", "water.obj", "water_01a2.obj", "export.json"}, UpAxis::Y);
         QVERIFY(listing.json().at("sequences").empty());
     }
@@ -55,12 +62,12 @@ private Q_SLOTS:
         QTemporaryDir out;
         const std::string dir = out.path().toStdString();
         ExportListing first = ExportListing::readOrEmpty(dir);
-        first.setScene(pouring());
+        first.setScene(pouring(), UpAxis::Y);
         first.addFiles({"water_0001.obj", "water_0002.obj", "fluid_0001.vdb"}, UpAxis::Y);
         first.write(dir);
 
         ExportListing second = ExportListing::readOrEmpty(dir);
-        second.setScene(pouring());
+        second.setScene(pouring(), UpAxis::Y);
         second.addFiles({"water_0003.obj"}, UpAxis::Y);
         second.addFiles({"fluid_0002.vdb"}, UpAxis::Z);
         second.write(dir);

@@ -89,7 +89,21 @@ private Q_SLOTS:
 
     void anEmptyFrameIsAValidFileWithNoObjects() {
         const std::string text = ObjExporter::encode({}, UpAxis::Y, {"nothing to show"});
-        QCOMPARE(text, std::string("# nothing to show\n"));
+        QCOMPARE(text, std::string("# nothing to show\n# end: 0 vertices, 0 triangles\n"));
+    }
+
+    void theLastLineCountsWhatTheFileHolds() {
+        // A file cut short loses this line, which is how a reader tells it from a whole one.
+        const std::vector<NamedMesh> objects = twoObjects();
+        const std::string text = ObjExporter::encode(objects, UpAxis::Y);
+        const std::size_t vertices =
+            objects[0].mesh.vertices.size() + objects[1].mesh.vertices.size();
+        const std::size_t triangles =
+            objects[0].mesh.triangleCount() + objects[1].mesh.triangleCount();
+        const std::string last = "# end: " + std::to_string(vertices) + " vertices, " +
+                                 std::to_string(triangles) + " triangles\n";
+        QVERIFY(text.size() > last.size());
+        QCOMPARE(text.substr(text.size() - last.size()), last);
     }
 
     void sequenceNamesArePaddedToFourDigits() {

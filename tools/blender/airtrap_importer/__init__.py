@@ -11,7 +11,7 @@ bl_info = {
 }
 
 import bpy
-from bpy.props import StringProperty
+from bpy.props import BoolProperty, EnumProperty, StringProperty
 from bpy_extras.io_utils import ImportHelper
 
 from . import bake_listing
@@ -27,11 +27,26 @@ class ImportAirtrapBake(bpy.types.Operator, ImportHelper):
     filename_ext = ""
     directory: StringProperty(subtype='DIR_PATH')
     filter_glob: StringProperty(default="export.json", options={'HIDDEN'})
+    bubble_shape: EnumProperty(
+        name="Bubbles",
+        items=(('SPHERES', "Spheres", "A sphere of the bubble's radius on every point of "
+                "bubbles_####.ply, carrying its velocity for motion blur"),
+               ('MESHES', "Oscillating meshes", "The ellipsoids of bubbles_####.obj, stretched "
+                "along the velocity and wobbling after birth")),
+        default='SPHERES')
+    import_volume: BoolProperty(
+        name="Volume", default=False,
+        description="fluid_####.vdb as a volume sequence: the density grid as a light fog, the "
+                    "velocity grid for motion blur")
+    preview_scene: BoolProperty(
+        name="Preview scene", default=True,
+        description="A camera framing the bake, a sun, a sky, a floor and quick Cycles settings")
 
     def execute(self, context):
         folder = importer.folder_of(self.directory or self.filepath)
         try:
-            report = importer.import_bake(folder, context)
+            report = importer.import_bake(folder, context, importer.ImportOptions(
+                self.bubble_shape, self.import_volume, self.preview_scene))
         except bake_listing.ListingError as error:
             print("Airtrap import: %s" % error)
             self.report({'ERROR'}, str(error))

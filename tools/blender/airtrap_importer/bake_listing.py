@@ -3,9 +3,16 @@
 # it reads the same inside and outside Blender.
 import json
 import os
+import re
 
 FORMAT_NAME = "airtrap-export"
 VERSION = 1
+DEFAULT_FPS = 30.0
+
+# A sequence file as `airtrap-cli export` names it: stem, frame number (four digits or more), ext.
+SEQUENCE_FILE = re.compile(r"^(water|bubbles|subgrid|bodies|particles|fluid)_(\d{4,})\.(obj|ply|vdb)$")
+# The header comment OBJ and PLY exports carry: "metres, Z up".
+UP_AXIS_COMMENT = re.compile(r"metres, ([YZ]) up")
 
 
 class ListingError(Exception):
@@ -27,24 +34,46 @@ class Sequence:
         self.frames = sorted(int(f) for f in entry.get("frames", []))
         self.directory = directory
 
+    def frame_span(self):
+        return "%d–%d" % (self.frames[0], self.frames[-1]) if self.frames else "none"
+
     def path(self, frame):
         return os.path.join(self.directory, sequence_file_name(self.stem, frame, self.ext))
 
     def present_frames(self):
-        """The listed frames whose file exists, and the paths of those that are missing."""
+        """The frames from the first to the last whose file exists, and the paths of those that
+        are missing (listed or in a gap of the listing)."""
         present, missing = [], []
-        for frame in self.frames:
+        for frame in range(self.frames[0], self.frames[-1] + 1) if self.frames else ():
             (present if os.path.isfile(self.path(frame)) else missing).append(frame)
         return present, [self.path(frame) for frame in missing]
+
+
+def _container_box(entry):
+    """The tank's box as ((x, y, z) low, (x, y, z) high) in Blender's axes (z up), or None."""
+    try:
+        low, high = [float(v) for v in entry["min"]], [float(v) for v in entry["max"]]
+        up_axis = entry.get("up_axis", "y")
+    except (KeyError, TypeError, ValueError):
+        return None
+    if len(low) != 3 or len(high) != 3:
+        return None
+    if up_axis != "z":
+        # y up to z up as the OBJ importer turns meshes: (x, y, z) → (x, −z, y).
+        low, high = (low[0], -high[2], low[1]), (high[0], -low[2], high[1])
+    return tuple(low), tuple(high)
 
 
 class BakeListing:
     def __init__(self, directory, json_data):
         self.directory = directory
+        # What the import should tell the user about the listing itself.
+        self.warnings = []
         self.scene_name = str(json_data.get("scene", os.path.basename(directory.rstrip("/"))))
         self.fps = float(json_data.get("fps", 30.0))
         self.frame_start = int(json_data.get("frame_start", 1))
         self.frame_end = int(json_data.get("frame_end", self.frame_start))
+        self.container = _container_box(json_data.get("container"))
         self.sequences = {
             key: Sequence(key, entry, directory)
             for key, entry in json_data.get("sequences", {}).items()
@@ -53,6 +82,71 @@ class BakeListing:
 
     def sequence(self, key):
         return self.sequences.get(key)
+
+    def check_frame_ranges(self):
+        """Warns of sequences whose frames leave the export's range (the scene then plays them
+        all) or stop short of it (the object shows nothing on the frames it lacks)."""
+        listed = {key: s for key, s in self.sequences.items() if s.frames}
+        outside = sorted(key for key, s in listed.items()
+                         if s.frames[0] < self.frame_start or s.frames[-1] > self.frame_end)
+        if outside:
+            first = min(listed[key].frames[0] for key in outside)
+            last = max(listed[key].frames[-1] for key in outside)
+            start, end = min(first, self.frame_start), max(last, self.frame_end)
+            self.warnings.append(
+                "%s gives the range %d–%d, but %s list frames %d–%d: the scene plays %d–%d"
+                % (os.path.join(self.directory, "export.json"), self.frame_start, self.frame_end,
+                   ", ".join(outside), first, last, start, end))
+            self.frame_start, self.frame_end = start, end
+        for key in sorted(listed):
+            frames = listed[key].frames
+            if frames[0] > self.frame_start or frames[-1] < self.frame_end:
+                self.warnings.append(
+                    "%s has frames %s of %d–%d: it shows nothing on the others"
+                    % (key, listed[key].frame_span(), self.frame_start, self.frame_end))
+
+
+def _up_axis_of(path):
+    """The up axis a sequence file's header comment states, or None."""
+    try:
+        with open(path, "rb") as file:
+            head = file.read(512).decode("ascii", "replace")
+    except OSError:
+        return None
+    match = UP_AXIS_COMMENT.search(head)
+    return match.group(1).lower() if match else None
+
+
+def listing_from_file_names(directory):
+    """The listing of a folder of sequence files without export.json (copied without it), or
+    None when the folder holds none. The frames come from the
+    file names, the up axis from the first OBJ or PLY header; the frame rate is not known."""
+    frames = {}
+    for name in os.listdir(directory):
+        match = SEQUENCE_FILE.match(name)
+        if match:
+            frames.setdefault("%s.%s" % (match.group(1), match.group(3)), []).append(
+                int(match.group(2)))
+    if not frames:
+        return None
+    up_axis = None
+    for key in sorted(k for k in frames if not k.endswith(".vdb")):
+        stem, _, ext = key.rpartition(".")
+        up_axis = _up_axis_of(os.path.join(directory,
+                                           sequence_file_name(stem, min(frames[key]), ext)))
+        if up_axis:
+            break
+    everything = [frame for listed in frames.values() for frame in listed]
+    listing = BakeListing(directory, {
+        "fps": DEFAULT_FPS, "frame_start": min(everything), "frame_end": max(everything),
+        "sequences": {key: {"frames": listed, "up_axis": up_axis or "y"}
+                      for key, listed in frames.items()}})
+    listing.warnings.append(
+        "%s has no export.json: frames %d–%d read from the file names, %s up from their headers, "
+        "%g frames per second assumed (export again with `airtrap-cli export` to list them)"
+        % (directory, listing.frame_start, listing.frame_end,
+           up_axis.upper() if up_axis else "Y (assumed)", DEFAULT_FPS))
+    return listing
 
 
 def read_listing(directory):
@@ -67,9 +161,14 @@ def read_listing(directory):
                 "%s is an Airtrap cache, not an export: run `airtrap-cli post %s` and "
                 "`airtrap-cli export %s --format obj --out FOLDER --up z` (and --format ply, "
                 "vdb), then import FOLDER" % (directory, directory, directory))
-        raise ListingError(
-            "%s has no export.json: it is not an Airtrap export (made by `airtrap-cli export`)"
-            % directory)
+        listing = listing_from_file_names(directory)
+        if listing is None:
+            raise ListingError(
+                "%s has no export.json and no sequence files (water_0001.obj, "
+                "bubbles_0001.ply, fluid_0001.vdb, ...): it is not an Airtrap export (made by "
+                "`airtrap-cli export`)" % directory)
+        listing.check_frame_ranges()
+        return listing
     try:
         with open(path, "r", encoding="utf-8") as file:
             data = json.load(file)
@@ -85,4 +184,5 @@ def read_listing(directory):
     if not listing.sequences:
         raise ListingError("%s lists no sequences: export with `airtrap-cli export %s ...`"
                            % (path, directory))
+    listing.check_frame_ranges()
     return listing

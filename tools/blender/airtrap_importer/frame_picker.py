@@ -19,9 +19,9 @@ def _new_node(tree, kind, location):
 
 def frame_picker_group(name, frames, first_frame, spheres_material=None):
     """A node group whose output is the realised geometry of `frames`' child for the current
-    frame (clamped to the sequence), where `frames` holds one object per frame from
+    frame (nothing outside the sequence), where `frames` holds one object per frame from
     `first_frame` on. With `spheres_material`, the child's points become spheres of radius
-    `pscale` in that material (instances, light to draw and render)."""
+    `pscale` in that material."""
     tree = bpy.data.node_groups.new(name, 'GeometryNodeTree')
     tree.inputs.new('NodeSocketGeometry', "Geometry")
     tree.outputs.new('NodeSocketGeometry', "Geometry")
@@ -33,26 +33,24 @@ def frame_picker_group(name, frames, first_frame, spheres_material=None):
     info.inputs['Separate Children'].default_value = True
     info.inputs['Reset Children'].default_value = True
 
+    # The child to keep: the current frame minus the first. Outside the sequence no child has
+    # that index, so the object shows nothing there, as Blender's own volume sequences do.
     time = _new_node(tree, 'GeometryNodeInputSceneTime', (-400, -200))
     child = _new_node(tree, 'ShaderNodeMath', (-200, -200))
     child.operation = 'SUBTRACT'
     child.inputs[1].default_value = float(first_frame)
     links.new(time.outputs['Frame'], child.inputs[0])
-    last = _new_node(tree, 'ShaderNodeMath', (0, -200))
-    last.operation = 'MINIMUM'
-    last.inputs[1].default_value = float(max(len(frames.objects) - 1, 0))
-    links.new(child.outputs[0], last.inputs[0])
-    clamped = _new_node(tree, 'ShaderNodeMath', (200, -200))
-    clamped.operation = 'MAXIMUM'
-    clamped.inputs[1].default_value = 0.0
-    links.new(last.outputs[0], clamped.inputs[0])
+    # Motion blur evaluates the scene a fraction of a frame off: those times keep this frame.
+    nearest = _new_node(tree, 'ShaderNodeMath', (0, -200))
+    nearest.operation = 'ROUND'
+    links.new(child.outputs[0], nearest.inputs[0])
 
     index = _new_node(tree, 'GeometryNodeInputIndex', (200, -350))
     other = _new_node(tree, 'FunctionNodeCompare', (400, -250))
     other.data_type = 'INT'
     other.operation = 'NOT_EQUAL'
     links.new(index.outputs[0], other.inputs[2])
-    links.new(clamped.outputs[0], other.inputs[3])
+    links.new(nearest.outputs[0], other.inputs[3])
 
     drop = _new_node(tree, 'GeometryNodeDeleteGeometry', (400, 0))
     drop.domain = 'INSTANCE'
@@ -80,8 +78,12 @@ def frame_picker_group(name, frames, first_frame, spheres_material=None):
     # The node has one output per data type, all named "Attribute": the float one is enabled.
     radius_output = next(o for o in radius.outputs if o.enabled and o.type == 'VALUE')
     links.new(radius_output, instance.inputs['Scale'])
-    output.location = (1050, 0)
-    links.new(instance.outputs[0], output.inputs[0])
+    # Realised, every sphere's vertices carry its point's attributes: `velocity`, which Cycles
+    # uses for motion blur (instances would not pass it on), and `pscale`.
+    spheres = _new_node(tree, 'GeometryNodeRealizeInstances', (1000, 0))
+    links.new(instance.outputs[0], spheres.inputs[0])
+    output.location = (1200, 0)
+    links.new(spheres.outputs[0], output.inputs[0])
     return tree
 
 

@@ -7,7 +7,10 @@ import bpy
 from . import bake_listing
 from . import frame_picker
 from . import materials
+from . import obj_trailer
 from . import ply_points
+from . import preview_scene
+from . import volume_sequence
 
 # The export's up axis → obj_import's axes, so that Blender's z is up either way.
 OBJ_AXES = {"z": {"forward_axis": 'Y', "up_axis": 'Z'},
@@ -20,6 +23,8 @@ class ImportReport:
     def __init__(self):
         self.objects = {}
         self.warnings = []
+        # The hidden collections holding each sequence's per-frame objects.
+        self.frame_collections = []
 
     def warn(self, text):
         self.warnings.append(text)
@@ -31,6 +36,21 @@ def _import_obj_frame(path, up_axis):
     before = set(bpy.data.objects)
     bpy.ops.wm.obj_import(filepath=path, **OBJ_AXES.get(up_axis, OBJ_AXES["y"]))
     return [obj for obj in bpy.data.objects if obj not in before]
+
+
+def _read_obj_frame(path, up_axis, report):
+    """The objects of a whole OBJ frame; none, with a warning, for a file cut short or
+    unreadable."""
+    try:
+        promised = obj_trailer.triangle_count(path)
+        objects = _import_obj_frame(path, up_axis)
+    except (OSError, RuntimeError, obj_trailer.ObjCutShort) as error:
+        report.warn("%s: its frame is skipped" % str(error).strip())
+        return []
+    read = sum(len(obj.data.polygons) for obj in objects if obj.type == 'MESH')
+    if read != promised:
+        report.warn("%s holds %d triangles where its last line says %d" % (path, read, promised))
+    return objects
 
 
 def _frame_mesh(objects, name):
@@ -58,6 +78,7 @@ def _import_sequence(sequence, name, parent, report, frame_object, spheres_mater
         report.warn("%s is missing: its frame is skipped" % path)
     first, last = sequence.frames[0], sequence.frames[-1]
     frames = frame_picker.hidden_collection(name + " frames", parent)
+    report.frame_collections.append(frames)
     for frame in range(first, last + 1):
         obj = frame_object(frame, sequence.path(frame) if frame in present else None)
         obj.name = frame_picker.frame_object_name(sequence.key.replace(".", "_"), frame)
@@ -69,13 +90,7 @@ def _import_sequence(sequence, name, parent, report, frame_object, spheres_mater
 def import_mesh_sequence(sequence, name, parent, report, material=None, smooth=False):
     """`sequence` (OBJ) as a mesh object following the frame."""
     def frame_object(frame, path):
-        objects = []
-        if path is not None:
-            try:
-                objects = _import_obj_frame(path, sequence.up_axis)
-            except RuntimeError as error:
-                report.warn("%s cannot be read (%s): its frame is skipped"
-                            % (path, str(error).strip()))
+        objects = _read_obj_frame(path, sequence.up_axis, report) if path is not None else []
         obj = _frame_mesh(objects, "%s %d" % (name, frame))
         mesh = obj.data
         if smooth and mesh.polygons:
@@ -130,32 +145,93 @@ def import_point_sequence(sequence, name, parent, report, material):
                             spheres_material=material)
 
 
-def import_bake(directory, context):
+class ImportOptions:
+    """What the import dialog offers: the trapped bubbles as `bubble_shape` 'SPHERES' (from the
+    PLY points) or 'MESHES' (the oscillating ellipsoids of the OBJ), the volume sequence or not,
+    and a preview scene (camera, sun, sky, floor, Cycles settings) or not."""
+
+    def __init__(self, bubble_shape='SPHERES', volume=False, preview=True):
+        self.bubble_shape = bubble_shape
+        self.volume = volume
+        self.preview = preview
+
+
+def _present(listing, key):
+    sequence = listing.sequence(key)
+    return sequence if sequence is not None and sequence.frames else None
+
+
+def _import_water(listing, collection, report):
+    water = _present(listing, "water.obj")
+    if water is None:
+        report.warn("%s has no water mesh sequence (water_####.obj): export with "
+                    "`airtrap-cli export CACHE --format obj --up z`" % listing.directory)
+        return
+    report.objects["water"] = import_mesh_sequence(
+        water, "Water", collection, report, materials.water_material(), smooth=True)
+
+
+def _import_bubbles(listing, collection, report, bubble_shape):
+    """The trapped bubbles in the shape asked for, or in the other when only it was exported."""
+    points, meshes = _present(listing, "bubbles.ply"), _present(listing, "bubbles.obj")
+    if bubble_shape == 'MESHES' and meshes is None and points is not None:
+        report.warn("%s has no bubble meshes (bubbles_####.obj): the bubbles are spheres from "
+                    "bubbles_####.ply" % listing.directory)
+    if bubble_shape == 'SPHERES' and points is None and meshes is not None:
+        report.warn("%s has no bubble points (bubbles_####.ply): the bubbles are the meshes of "
+                    "bubbles_####.obj" % listing.directory)
+    if meshes is not None and (bubble_shape == 'MESHES' or points is None):
+        report.objects["bubbles"] = import_mesh_sequence(
+            meshes, "Bubbles", collection, report, materials.air_material(), smooth=True)
+    elif points is not None:
+        report.objects["bubbles"] = import_point_sequence(
+            points, "Bubbles", collection, report, materials.air_material())
+    subgrid = _present(listing, "subgrid.ply")
+    if subgrid is not None:
+        report.objects["sub-grid bubbles"] = import_point_sequence(
+            subgrid, "Sub-grid bubbles", collection, report, materials.air_material())
+
+
+def _import_volume(listing, collection, report):
+    fluid = _present(listing, "fluid.vdb")
+    if fluid is None:
+        report.warn("%s has no volume sequence (fluid_####.vdb): export with "
+                    "`airtrap-cli export CACHE --format vdb --up z`" % listing.directory)
+        return
+    report.objects["water volume"] = volume_sequence.import_volume_sequence(
+        fluid, "Water volume", collection, report)
+
+
+def _set_frames(scene, listing):
+    scene.frame_start = listing.frame_start
+    scene.frame_end = listing.frame_end
+    scene.frame_current = listing.frame_start
+    scene.render.fps = max(1, int(round(listing.fps)))
+    scene.render.fps_base = scene.render.fps / listing.fps if listing.fps > 0 else 1.0
+
+
+def import_bake(directory, context, options=None):
     """Imports the export folder `directory`; bake_listing.ListingError when it cannot."""
+    options = options or ImportOptions()
     listing = bake_listing.read_listing(directory)
     report = ImportReport()
+    for warning in listing.warnings:
+        report.warn(warning)
     collection = bpy.data.collections.new(listing.scene_name)
     context.scene.collection.children.link(collection)
 
-    water = listing.sequence("water.obj")
-    if water is not None and water.frames:
-        report.objects["water"] = import_mesh_sequence(
-            water, "Water", collection, report, materials.water_material(), smooth=True)
-    else:
-        report.warn("%s has no water mesh sequence (water_####.obj): export with "
-                    "`airtrap-cli export CACHE --format obj --up z`" % listing.directory)
-
-    for key, name in (("bubbles.ply", "Bubbles"), ("subgrid.ply", "Sub-grid bubbles")):
-        points = listing.sequence(key)
-        if points is not None and points.frames:
-            report.objects[name.lower()] = import_point_sequence(
-                points, name, collection, report, materials.air_material())
-
-    scene = context.scene
-    scene.frame_start = listing.frame_start
-    scene.frame_end = listing.frame_end
-    scene.render.fps = max(1, int(round(listing.fps)))
-    scene.render.fps_base = scene.render.fps / listing.fps if listing.fps > 0 else 1.0
+    _import_water(listing, collection, report)
+    _import_bubbles(listing, collection, report, options.bubble_shape)
+    bodies = _present(listing, "bodies.obj")
+    if bodies is not None:
+        report.objects["bodies"] = import_mesh_sequence(bodies, "Bodies", collection, report,
+                                                        materials.body_material())
+    if options.volume:
+        _import_volume(listing, collection, report)
+    _set_frames(context.scene, listing)
+    if options.preview:
+        preview_scene.set_up(context.scene, collection, report.frame_collections,
+                             listing.container)
     return report
 
 

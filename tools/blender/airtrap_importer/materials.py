@@ -16,7 +16,22 @@ def water_material():
     bsdf.inputs["Transmission"].default_value = 1.0
     bsdf.inputs["IOR"].default_value = WATER_IOR
     bsdf.inputs["Roughness"].default_value = 0.0
+    _clear_to_shadow_rays(material, bsdf.outputs[0])
     return material
+
+
+def _clear_to_shadow_rays(material, surface):
+    """Lets shadow rays through `surface` (a refracting one): with caustics off, as quick renders
+    have them, light reaches what lies under water only through such rays, and a refracting
+    surface would otherwise shade the whole pool black. A common stand-in for caustics."""
+    tree = material.node_tree
+    path = tree.nodes.new('ShaderNodeLightPath')
+    clear = tree.nodes.new('ShaderNodeBsdfTransparent')
+    mix = tree.nodes.new('ShaderNodeMixShader')
+    tree.links.new(path.outputs["Is Shadow Ray"], mix.inputs[0])
+    tree.links.new(surface, mix.inputs[1])
+    tree.links.new(clear.outputs[0], mix.inputs[2])
+    tree.links.new(mix.outputs[0], tree.nodes.get("Material Output").inputs["Surface"])
 
 
 def air_material():
@@ -33,5 +48,76 @@ def air_material():
     glass = nodes.new('ShaderNodeBsdfGlass')
     glass.inputs["IOR"].default_value = 1.0 / WATER_IOR
     glass.inputs["Roughness"].default_value = 0.0
-    material.node_tree.links.new(glass.outputs[0], nodes.get("Material Output").inputs["Surface"])
+    _clear_to_shadow_rays(material, glass.outputs[0])
+    return material
+
+
+def body_material():
+    """The bodies and obstacles: a plain light grey, matte plastic."""
+    material = bpy.data.materials.get("Airtrap body")
+    if material is not None:
+        return material
+    material = bpy.data.materials.new("Airtrap body")
+    material.use_nodes = True
+    bsdf = material.node_tree.nodes.get("Principled BSDF")
+    bsdf.inputs["Base Color"].default_value = (0.6, 0.6, 0.58, 1.0)
+    bsdf.inputs["Roughness"].default_value = 0.5
+    material.diffuse_color = (0.6, 0.6, 0.58, 1.0)
+    return material
+
+
+def volume_material():
+    """Water as a light blue fog: Principled Volume reading the `density` grid (its default
+    density attribute), thin enough that the surface mesh stays the water's look."""
+    material = bpy.data.materials.get("Airtrap water volume")
+    if material is not None:
+        return material
+    material = bpy.data.materials.new("Airtrap water volume")
+    material.use_nodes = True
+    nodes = material.node_tree.nodes
+    nodes.remove(nodes.get("Principled BSDF"))
+    fog = nodes.new('ShaderNodeVolumePrincipled')
+    fog.inputs["Color"].default_value = (0.55, 0.8, 1.0, 1.0)
+    fog.inputs["Density"].default_value = 2.0
+    material.node_tree.links.new(fog.outputs[0], nodes.get("Material Output").inputs["Volume"])
+    return material
+
+
+def floor_material(square):
+    """A matte checker of squares `square` metres wide, in object space (the floor's size does
+    not matter)."""
+    material = bpy.data.materials.new("Airtrap floor")
+    material.use_nodes = True
+    tree = material.node_tree
+    checker = tree.nodes.new('ShaderNodeTexChecker')
+    checker.inputs["Scale"].default_value = 1.0 / square
+    checker.inputs["Color1"].default_value = (0.75, 0.75, 0.72, 1.0)
+    checker.inputs["Color2"].default_value = (0.3, 0.3, 0.3, 1.0)
+    coordinates = tree.nodes.new('ShaderNodeTexCoord')
+    tree.links.new(coordinates.outputs["Object"], checker.inputs["Vector"])
+    bsdf = tree.nodes.get("Principled BSDF")
+    bsdf.inputs["Roughness"].default_value = 0.6
+    tree.links.new(checker.outputs["Color"], bsdf.inputs["Base Color"])
+    return material
+
+
+def thin_glass_material():
+    """A pane of glass of no thickness: light passes straight through (a zero-thickness wall
+    cannot refract the way a slab does, which shifts rays back parallel anyway) and the
+    surface reflects by Fresnel at IOR 1.5."""
+    material = bpy.data.materials.new("Airtrap thin glass")
+    material.use_nodes = True
+    tree = material.node_tree
+    nodes = tree.nodes
+    nodes.remove(nodes.get("Principled BSDF"))
+    fresnel = nodes.new('ShaderNodeFresnel')
+    fresnel.inputs["IOR"].default_value = 1.5
+    clear = nodes.new('ShaderNodeBsdfTransparent')
+    shine = nodes.new('ShaderNodeBsdfGlossy')
+    shine.inputs["Roughness"].default_value = 0.0
+    mix = nodes.new('ShaderNodeMixShader')
+    tree.links.new(fresnel.outputs[0], mix.inputs[0])
+    tree.links.new(clear.outputs[0], mix.inputs[1])
+    tree.links.new(shine.outputs[0], mix.inputs[2])
+    tree.links.new(mix.outputs[0], nodes.get("Material Output").inputs["Surface"])
     return material

@@ -1,0 +1,36 @@
+# fluid_####.vdb as a volume sequence Blender plays and renders by itself: its `density` grid
+# (0 outside the water, 1 inside) shaded as a light fog, its `vel` grid for Cycles' motion blur.
+import math
+
+import bpy
+
+from . import materials
+
+
+def import_volume_sequence(sequence, name, collection, report):
+    """`sequence` (fluid_####.vdb) as the volume object `name` in `collection`."""
+    present, missing = sequence.present_frames()
+    for path in missing:
+        report.warn("%s is missing: the volume shows nothing on its frame" % path)
+    first, last = sequence.frames[0], sequence.frames[-1]
+    volume = bpy.data.volumes.new(name)
+    volume.filepath = sequence.path(present[0] if present else first)
+    volume.is_sequence = True
+    # Blender numbers a sequence's files from the file at frame_start as 1, plus frame_offset:
+    # with the offset first - 1 the file of frame f is fluid_f.vdb, as exported.
+    volume.frame_start = first
+    volume.frame_offset = first - 1
+    volume.frame_duration = last - first + 1
+    volume.sequence_mode = 'CLIP'
+    # Blender checks the name against the grids it has loaded: load them first.
+    volume.grids.load()
+    if any(grid.name == "vel" for grid in volume.grids):
+        volume.velocity_grid = "vel"
+        volume.velocity_unit = 'SECOND'
+    volume.materials.append(materials.volume_material())
+    obj = bpy.data.objects.new(name, volume)
+    if sequence.up_axis != "z":
+        # A Y-up export's grids, turned as the OBJ importer turns its meshes: y up becomes z up.
+        obj.rotation_euler = (math.pi / 2, 0.0, 0.0)
+    collection.objects.link(obj)
+    return obj
