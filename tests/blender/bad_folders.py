@@ -153,4 +153,10 @@ os.makedirs(bare, exist_ok=True)
 with open(os.path.join(bare, "export.json"), "w") as file:
     json.dump({"format": "airtrap-export", "version": 1, "sequences": {}}, file)
 refused_saying(bare, "lists no sequences")
+malformed = os.path.join(work_dir, "malformed")
+os.makedirs(malformed, exist_ok=True)
+with open(os.path.join(malformed, "export.json"), "w") as file:
+    json.dump({"format": "airtrap-export", "version": 1,
+               "sequences": {"water.obj": {"frames": ["one"]}}}, file)
+refused_saying(malformed, "has a malformed entry")
 print("PASS")

@@ -1,12 +1,14 @@
 # Run by ctest (label blender) as
-#   blender -b --factory-startup --python import_bake.py -- EXPORT_DIR WORK_DIR BODIES_EXPORT_DIR
+#   blender -b --factory-startup --python import_bake.py -- EXPORT_DIR WORK_DIR BODIES_EXPORT_DIR \
+#       Y_UP_EXPORT_DIR
 # The add-on enables; the default import makes a Water object whose mesh at the first and last
 # frames has exactly the vertices and faces of water_000N.obj, Bubbles whose spheres are the
 # points of bubbles_000N.ply with their pscale as radius and their velocity on every vertex, and
 # a preview scene; saved, the file plays the water in a fresh Blender without the add-on. With
 # the other options the bubbles are the meshes of bubbles_000N.obj and the volume has the
-# density grid; the buoyancy export gives Bodies with the counts of bodies_000N.obj. Exits
-# non-zero on the first failure, naming it.
+# density grid; the buoyancy export gives Bodies with the counts of bodies_000N.obj; the same bake
+# exported Y up lands where the Z-up export does (water, bubbles, volume, camera). Exits non-zero
+# on the first failure, naming it.
 import math
 import os
 import subprocess
@@ -18,11 +20,12 @@ sys.path.insert(0, os.path.join(HERE, "..", "..", "tools", "blender"))
 
 import addon_utils  # noqa: E402 (the add-on's folder goes on the path first)
 import bpy  # noqa: E402
+from mathutils import Vector  # noqa: E402
 
 from airtrap_importer import ply_points  # noqa: E402
 
-export_dir, work_dir, bodies_dir = (os.path.abspath(a)
-                                    for a in sys.argv[sys.argv.index("--") + 1:][:3])
+export_dir, work_dir, bodies_dir, y_up_dir = (os.path.abspath(a)
+                                              for a in sys.argv[sys.argv.index("--") + 1:][:4])
 SPHERE_VERTICES = 42  # an icosphere of two subdivisions
 
 
@@ -90,6 +93,28 @@ def sphere_blocks(mesh):
     return blocks
 
 
+def mesh_box(obj, frame):
+    mesh = evaluated_mesh(obj, frame)
+    corners = [v.co for v in mesh.vertices]
+    return [min(c[axis] for c in corners) for axis in range(3)] + \
+        [max(c[axis] for c in corners) for axis in range(3)]
+
+
+def world_box(obj, frame):
+    """The world-space box of an object's evaluated bounds (a volume's grids)."""
+    bpy.context.scene.frame_set(frame)
+    evaluated = obj.evaluated_get(bpy.context.evaluated_depsgraph_get())
+    corners = [evaluated.matrix_world @ Vector(c) for c in evaluated.bound_box]
+    return [min(c[axis] for c in corners) for axis in range(3)] + \
+        [max(c[axis] for c in corners) for axis in range(3)]
+
+
+def same_place(name, got, expected, tolerance):
+    if len(got) != len(expected) or any(abs(a - b) > tolerance for a, b in zip(got, expected)):
+        fail("Y up: %s is at %s, Z up at %s" % (name, [round(v, 5) for v in got],
+                                                 [round(v, 5) for v in expected]))
+
+
 def check_spheres(bubbles, frame):
     columns = ply_points.read_points(os.path.join(export_dir, "bubbles_%04d.ply" % frame))
     mesh = evaluated_mesh(bubbles, frame)
@@ -131,6 +156,9 @@ if scene.camera is None or scene.render.engine != 'CYCLES' or scene.world is Non
 for name in ("Airtrap sun", "Airtrap floor", "Airtrap tank"):
     object_named(name)
 print("preview scene: camera, sun, sky, floor, tank, Cycles")
+z_up = {"water": mesh_box(object_named("Water"), last),
+        "bubbles": sorted(c for c, _, _ in sphere_blocks(evaluated_mesh(bubbles, last))),
+        "camera": list(scene.camera.location)}
 
 saved = os.path.join(work_dir, "imported.blend")
 bpy.ops.wm.save_as_mainfile(filepath=saved)
@@ -162,6 +190,17 @@ print("volume at frame %d: %s, grids %s" % (last, os.path.basename(
     volume.data.grids.frame_filepath), ", ".join(grids)))
 if bpy.context.scene.camera is not None or bpy.data.objects.get("Airtrap floor") is not None:
     fail("preview_scene=False made a preview scene")
+z_up["volume"] = world_box(volume, last)
+
+# The same bake exported Y up: turned to Blender's Z up, everything lands where it did.
+import_bake(y_up_dir, import_volume=True)
+same_place("the water", mesh_box(object_named("Water"), last), z_up["water"], 1e-5)
+centres = sorted(c for c, _, _ in sphere_blocks(evaluated_mesh(object_named("Bubbles"), last)))
+same_place("the bubbles", [v for c in centres for v in c],
+           [v for c in z_up["bubbles"] for v in c], 1e-5)
+same_place("the volume", world_box(object_named("Water volume"), last), z_up["volume"], 1e-4)
+same_place("the camera", list(bpy.context.scene.camera.location), z_up["camera"], 1e-4)
+print("Y-up export: water, bubbles, volume and camera where the Z-up export puts them")
 
 # Bodies, from three frames of the buoyancy sample.
 import_bake(bodies_dir)

@@ -180,7 +180,12 @@ def read_listing(directory):
     if data.get("version") != VERSION:
         raise ListingError("%s has version %r; this add-on reads version %d"
                            % (path, data.get("version"), VERSION))
-    listing = BakeListing(directory, data)
+    try:
+        listing = BakeListing(directory, data)
+    except (TypeError, ValueError, AttributeError) as error:
+        raise ListingError("%s has a malformed entry (%s): `fps` and `frame_*` must be numbers, "
+                           "`sequences` an object whose entries list integer `frames`"
+                           % (path, error))
     if not listing.sequences:
         raise ListingError("%s lists no sequences: export with `airtrap-cli export %s ...`"
                            % (path, directory))

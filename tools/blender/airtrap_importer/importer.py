@@ -3,6 +3,7 @@
 import os
 
 import bpy
+from mathutils import Matrix
 
 from . import bake_listing
 from . import frame_picker
@@ -58,6 +59,10 @@ def _frame_mesh(objects, name):
     for obj in objects:
         for collection in list(obj.users_collection):
             collection.objects.unlink(obj)
+        # The OBJ importer turns a Y-up file by the object's rotation; the frame picker resets
+        # its children's transforms, so the turn goes into the mesh itself.
+        obj.data.transform(obj.matrix_world)
+        obj.matrix_world = Matrix.Identity(4)
     if not objects:
         return bpy.data.objects.new(name, bpy.data.meshes.new(name))
     target = objects[0]

@@ -91,8 +91,8 @@ def floor_material(square):
     tree = material.node_tree
     checker = tree.nodes.new('ShaderNodeTexChecker')
     checker.inputs["Scale"].default_value = 1.0 / square
-    checker.inputs["Color1"].default_value = (0.75, 0.75, 0.72, 1.0)
-    checker.inputs["Color2"].default_value = (0.3, 0.3, 0.3, 1.0)
+    checker.inputs["Color1"].default_value = (0.6, 0.6, 0.58, 1.0)
+    checker.inputs["Color2"].default_value = (0.4, 0.4, 0.4, 1.0)
     coordinates = tree.nodes.new('ShaderNodeTexCoord')
     tree.links.new(coordinates.outputs["Object"], checker.inputs["Vector"])
     bsdf = tree.nodes.get("Principled BSDF")
@@ -110,8 +110,17 @@ def thin_glass_material():
     tree = material.node_tree
     nodes = tree.nodes
     nodes.remove(nodes.get("Principled BSDF"))
+    # Cycles' Fresnel node inverts the IOR on a back face, and seen from inside the tank the
+    # walls would then mirror everything past 42°, as a glass block does; a pane reflects the
+    # same from both sides, so a back face gets 1/1.5, which the node turns back into 1.5.
+    backfacing = nodes.new('ShaderNodeNewGeometry').outputs["Backfacing"]
+    ior = nodes.new('ShaderNodeMath')
+    ior.operation = 'MULTIPLY_ADD'
+    tree.links.new(backfacing, ior.inputs[0])
+    ior.inputs[1].default_value = 1.0 / 1.5 - 1.5
+    ior.inputs[2].default_value = 1.5
     fresnel = nodes.new('ShaderNodeFresnel')
-    fresnel.inputs["IOR"].default_value = 1.5
+    tree.links.new(ior.outputs[0], fresnel.inputs["IOR"])
     clear = nodes.new('ShaderNodeBsdfTransparent')
     shine = nodes.new('ShaderNodeBsdfGlossy')
     shine.inputs["Roughness"].default_value = 0.0

@@ -164,10 +164,15 @@ def _union(a, b):
 
 def set_up(scene, bake_collection, frame_collections, container):
     """Adds the preview scene in a collection "Preview" inside `bake_collection`: the camera
-    frames the tank (`container`, ((x, y, z) low, (x, y, z) high) or None) and the meshes of
-    `frame_collections`. Nothing when there is neither."""
+    frames the tank (`container`, ((x, y, z) low, (x, y, z) high) or None) up to the height the
+    meshes of `frame_collections` reach, and those meshes. Nothing when there is neither."""
     tank = None if container is None else (Vector(container[0]), Vector(container[1]))
-    bounds = _union(tank, _bounds(frame_collections))
+    shown = _bounds(frame_collections)
+    framed = tank
+    if tank is not None and shown is not None:
+        # The tank's floor and whatever the sequences reach: not the empty headroom above.
+        framed = (tank[0], Vector((tank[1].x, tank[1].y, min(tank[1].z, shown[1].z))))
+    bounds = _union(framed, shown)
     if bounds is None:
         return None
     low, high = bounds
