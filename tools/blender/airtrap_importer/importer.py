@@ -166,14 +166,21 @@ def _present(listing, key):
     return sequence if sequence is not None and sequence.frames else None
 
 
+def _present_or_said(listing, key, what, report):
+    """The sequence `key` ("water.obj"), or None with a warning saying how to export it."""
+    sequence = _present(listing, key)
+    if sequence is None:
+        stem, _, ext = key.rpartition(".")
+        report.warn("%s has no %s (%s_####.%s): export with `airtrap-cli export CACHE --format "
+                    "%s --up z`" % (listing.directory, what, stem, ext, ext))
+    return sequence
+
+
 def _import_water(listing, collection, report):
-    water = _present(listing, "water.obj")
-    if water is None:
-        report.warn("%s has no water mesh sequence (water_####.obj): export with "
-                    "`airtrap-cli export CACHE --format obj --up z`" % listing.directory)
-        return
-    report.objects["water"] = import_mesh_sequence(
-        water, "Water", collection, report, materials.water_material(), smooth=True)
+    water = _present_or_said(listing, "water.obj", "water mesh sequence", report)
+    if water is not None:
+        report.objects["water"] = import_mesh_sequence(
+            water, "Water", collection, report, materials.water_material(), smooth=True)
 
 
 def _import_bubbles(listing, collection, report, bubble_shape):
@@ -198,13 +205,10 @@ def _import_bubbles(listing, collection, report, bubble_shape):
 
 
 def _import_volume(listing, collection, report):
-    fluid = _present(listing, "fluid.vdb")
-    if fluid is None:
-        report.warn("%s has no volume sequence (fluid_####.vdb): export with "
-                    "`airtrap-cli export CACHE --format vdb --up z`" % listing.directory)
-        return
-    report.objects["water volume"] = volume_sequence.import_volume_sequence(
-        fluid, "Water volume", collection, report)
+    fluid = _present_or_said(listing, "fluid.vdb", "volume sequence", report)
+    if fluid is not None:
+        report.objects["water volume"] = volume_sequence.import_volume_sequence(
+            fluid, "Water volume", collection, report)
 
 
 def _set_frames(scene, listing):
