@@ -41,7 +41,9 @@ void BakeCommand::addTo(CLI::App& parent) {
                      "Frames to bake: A:B, A:, :B or N (default: 1 to frames.end_frame). A start "
                      "after 1 continues the cache from frame A−1");
     CLI::Option* resume =
-        app_->add_flag("--resume", resume_, "Continue the cache in --out from its last good frame");
+        app_->add_flag("--resume", resume_,
+                       "Continue the cache in --out from its last good frame (or start it); "
+                       "with --frames A:B, A is only the range's start");
     app_->add_flag("--overwrite", overwrite_, "Replace the cache in --out (only its own files)")
         ->excludes(resume);
     app_->add_option("--threads,-j", threads_, "Worker threads (0 = all cores)")
@@ -77,11 +79,11 @@ void BakeCommand::refuseRecompute(const FrameRange& range) const {
 }
 
 void BakeCommand::checkCacheFolder(const FrameRange& range) const {
-    if (resume_ && range.firstGiven())
-        throw Error(ErrorKind::InvalidInput,
-                    "--resume continues after the last good frame and cannot be combined with a "
-                    "start frame (--frames " +
-                        framesText_ + "); use --frames :B to set only the last frame");
+    // --resume makes the frames up to B whole from the first missing or damaged one, whatever
+    // the start frame says, so the same command line starts, continues or finishes a bake (a
+    // farm's requeued job runs its script again unchanged).
+    if (resume_)
+        return;
     if (range.first() > 1) {
         refuseRecompute(range);
         return;
@@ -95,7 +97,9 @@ void BakeCommand::checkCacheFolder(const FrameRange& range) const {
 std::string BakeCommand::resumeCommand(const FrameRange& range) const {
     std::string command =
         "airtrap-cli bake " + shellQuote(scenePath_) + " --out " + shellQuote(outDir_);
-    if (range.lastGiven())
+    if (range.firstGiven())
+        command += " --frames " + shellQuote(framesText_);
+    else if (range.lastGiven())
         command += " --frames :" + std::to_string(range.last());
     // The overrides are part of the scene: without them the parameter hash would not match.
     for (const std::string& assignment : overrides_)
@@ -148,7 +152,7 @@ ExitCode BakeCommand::run() {
     const BakeOptions options{.cacheDir = outDir_,
                               .resume = resume_,
                               .overwrite = overwrite_,
-                              .firstFrame = range.first() > 1 ? range.first() : 0,
+                              .firstFrame = range.first() > 1 && !resume_ ? range.first() : 0,
                               .lastFrame = range.last()};
     const ProgressLine::Mode mode = quiet_                    ? ProgressLine::Mode::Silent
                                     : ::isatty(STDERR_FILENO) ? ProgressLine::Mode::InPlace

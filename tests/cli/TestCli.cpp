@@ -336,6 +336,28 @@ private Q_SLOTS:
         QCOMPARE(framesOf(cache_), oneTo(4));
     }
 
+    void resumeTakesTheSameCommandLineEveryTime() {
+        // Starts the bake, continues it, and then has nothing to do: one command line.
+        const QStringList same =
+            args({"bake", scene_, "--out", cache_, "--frames", "1:3", "--resume"});
+        QCOMPARE_EXIT(runCli(same), 0);
+        QCOMPARE(framesOf(cache_), oneTo(3));
+        const auto frame3 = stateBytes(cache_, 3);
+        fs::remove(cache_ + "/frame_0003.atf");
+        const CliResult continued = runCli(same);
+        QCOMPARE_EXIT(continued, 0);
+        QVERIFY_CONTAINS(continued.err, "continuing from frame 2");
+        QVERIFY(stateBytes(cache_, 3) == frame3);
+        const CliResult done = runCli(same);
+        QCOMPARE_EXIT(done, 0);
+        QVERIFY_CONTAINS(done.out, "nothing to do");
+        // A later start frame does not skip what is missing before it: frame 4 continues 3.
+        const CliResult later =
+            runCli(args({"bake", scene_, "--out", cache_, "--frames", "4:4", "--resume"}));
+        QCOMPARE_EXIT(later, 0);
+        QCOMPARE(framesOf(cache_), oneTo(4));
+    }
+
     void resumeRecomputesBitIdentically_data() {
         QTest::addColumn<QString>("damage");
         QTest::newRow("last frame deleted") << "delete";
