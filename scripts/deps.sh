@@ -19,6 +19,8 @@ packages=(
     clang-16 libclang-rt-16-dev llvm-16
     # the Blender add-on's tests (tools/blender, label blender): Blender 3.4, run headless
     blender
+    # the farm's tests (label farm): a one-node Slurm cluster (scripts/slurm-local.sh)
+    slurm-wlm slurm-client munge
 )
 
 missing=()
