@@ -9,7 +9,7 @@ from mathutils import Vector
 
 from . import materials
 
-VIEW_AZIMUTH = math.radians(-35.0)  # from the front (−y), turned towards +x
+VIEW_AZIMUTH = math.radians(-35.0)  # from the front (−y), turned towards −x
 VIEW_ELEVATION = math.radians(35.0)
 SUN_AZIMUTH = math.radians(-120.0)
 SUN_ELEVATION = math.radians(50.0)
