@@ -147,6 +147,64 @@ if len(bubbles.evaluated_get(bpy.context.evaluated_depsgraph_get()).data.vertice
     fail("Bubbles shows something at frame 15, after its last listed frame")
 print("mismatched frame range said, frames 1–15 imported")
 
+def edit_listing(folder, change):
+    path = os.path.join(folder, "export.json")
+    with open(path) as file:
+        listing = json.load(file)
+    change(listing)
+    with open(path, "w") as file:
+        json.dump(listing, file)
+
+
+# An OBJ whose triangles do not match its closing line: imported, and named.
+miscounted = copy_of_export("miscounted")
+with open(os.path.join(miscounted, "water_0002.obj"), "a") as file:
+    file.write("# end: 1 vertices, 1 triangles\n")
+imports_warning(miscounted, ["water_0002.obj holds ", "triangles where its last line says 1"])
+if water_vertices(2) == 0:
+    fail("the miscounted water_0002.obj was not imported")
+print("a miscounted OBJ imported and named")
+
+# Only the oscillating meshes exported: the spheres asked for become those meshes, with a word.
+meshes_only = copy_of_export("meshes-only")
+edit_listing(meshes_only, lambda listing: listing["sequences"].pop("bubbles.ply"))
+imports_warning(meshes_only, ["has no bubble points (bubbles_####.ply): the bubbles are the "
+                              "meshes of bubbles_####.obj"])
+print("bubble points missing: the meshes imported instead")
+
+# A bake listed from frame 5: nothing before it, frame 5's files at frame 5 (volume included).
+late = copy_of_export("late")
+
+
+def from_frame_5(listing):
+    listing["frame_start"] = 5
+    for entry in listing["sequences"].values():
+        entry["frames"] = [f for f in entry["frames"] if f >= 5]
+
+
+edit_listing(late, from_frame_5)
+messages.clear()
+bpy.ops.wm.read_factory_settings(use_empty=True)
+addon_utils.enable("airtrap_importer", default_set=True)
+if bpy.ops.import_scene.airtrap_bake(directory=late, import_volume=True,
+                                     preview_scene=False) != {'FINISHED'}:
+    fail("the listing from frame 5 did not import")
+if bpy.context.scene.frame_start != 5 or water_vertices(4) != 0 or water_vertices(5) == 0:
+    fail("listed from frame 5: the scene starts at %d, water at 4 and 5 has %d and %d vertices"
+         % (bpy.context.scene.frame_start, water_vertices(4), water_vertices(5)))
+volume = bpy.data.objects["Water volume"].data
+for frame in (5, 9):
+    bpy.context.scene.frame_set(frame)
+    volume.grids.load()
+    if volume.grids.frame_filepath != os.path.join(late, "fluid_%04d.vdb" % frame):
+        fail("at frame %d the volume reads %s" % (frame, volume.grids.frame_filepath))
+print("listed from frame 5: nothing at 4, frame 5's water and volume at 5")
+
+# Another version of the listing is refused.
+newer = copy_of_export("newer")
+edit_listing(newer, lambda listing: listing.update(version=2))
+refused_saying(newer, "has version 2; this add-on reads version 1")
+
 # A listing with no sequences says so.
 bare = os.path.join(work_dir, "bare")
 os.makedirs(bare, exist_ok=True)

@@ -149,7 +149,13 @@ check_mesh_sequence(object_named("Water"), export_dir, "water", (first, last))
 bubbles = object_named("Bubbles")
 for frame in (first, last):
     check_spheres(bubbles, frame)
-object_named("Sub-grid bubbles")
+subgrid_points = len(ply_points.read_points(
+    os.path.join(export_dir, "subgrid_%04d.ply" % last)).get("x", []))
+subgrid_vertices = len(evaluated_mesh(object_named("Sub-grid bubbles"), last).vertices)
+if subgrid_points == 0 or subgrid_vertices != SPHERE_VERTICES * subgrid_points:
+    fail("frame %d: Sub-grid bubbles has %d vertices, subgrid_%04d.ply %d points"
+         % (last, subgrid_vertices, last, subgrid_points))
+print("frame %d: %d sub-grid bubble spheres, one per point" % (last, subgrid_points))
 if scene.camera is None or scene.render.engine != 'CYCLES' or scene.world is None:
     fail("no preview scene: camera %s, engine %s, world %s"
          % (scene.camera, scene.render.engine, scene.world))
@@ -157,7 +163,7 @@ for name in ("Airtrap sun", "Airtrap floor", "Airtrap tank"):
     object_named(name)
 print("preview scene: camera, sun, sky, floor, tank, Cycles")
 z_up = {"water": mesh_box(object_named("Water"), last),
-        "bubbles": sorted(c for c, _, _ in sphere_blocks(evaluated_mesh(bubbles, last))),
+        "bubbles": sorted((c, v) for c, _, v in sphere_blocks(evaluated_mesh(bubbles, last))),
         "camera": list(scene.camera.location)}
 
 saved = os.path.join(work_dir, "imported.blend")
@@ -177,8 +183,12 @@ print("fresh Blender without the add-on: frame %d matches" % last)
 
 # The other options: oscillating bubble meshes, the volume, no preview.
 import_bake(export_dir, bubble_shape='MESHES', import_volume=True, preview_scene=False)
-check_mesh_sequence(object_named("Bubbles"), export_dir, "bubbles", (first, last))
 volume = object_named("Water volume")
+# Named by the import itself, before any frame change loads the grids.
+if volume.data.velocity_grid != "vel":
+    fail("the volume's velocity grid is %r after the import, not 'vel'"
+         % volume.data.velocity_grid)
+check_mesh_sequence(object_named("Bubbles"), export_dir, "bubbles", (first, last))
 bpy.context.scene.frame_set(last)
 volume.data.grids.load()
 grids = sorted(grid.name for grid in volume.data.grids)
@@ -195,12 +205,23 @@ z_up["volume"] = world_box(volume, last)
 # The same bake exported Y up: turned to Blender's Z up, everything lands where it did.
 import_bake(y_up_dir, import_volume=True)
 same_place("the water", mesh_box(object_named("Water"), last), z_up["water"], 1e-5)
-centres = sorted(c for c, _, _ in sphere_blocks(evaluated_mesh(object_named("Bubbles"), last)))
-same_place("the bubbles", [v for c in centres for v in c],
-           [v for c in z_up["bubbles"] for v in c], 1e-5)
+spheres = sorted((c, v) for c, _, v in
+                 sphere_blocks(evaluated_mesh(object_named("Bubbles"), last)))
+same_place("the bubbles and their velocities", [x for c, v in spheres for x in c + list(v)],
+           [x for c, v in z_up["bubbles"] for x in c + list(v)], 1e-5)
 same_place("the volume", world_box(object_named("Water volume"), last), z_up["volume"], 1e-4)
 same_place("the camera", list(bpy.context.scene.camera.location), z_up["camera"], 1e-4)
-print("Y-up export: water, bubbles, volume and camera where the Z-up export puts them")
+print("Y-up export: water, bubbles, velocities, volume and camera where the Z-up export puts "
+      "them")
+
+# Imported again into the same scene: one camera and one sun, the new import's.
+if bpy.ops.import_scene.airtrap_bake(directory=y_up_dir) != {'FINISHED'}:
+    fail("the second import did not finish")
+for prefix in ("Airtrap camera", "Airtrap sun", "Airtrap floor", "Airtrap tank"):
+    found = [o.name for o in bpy.data.objects if o.name.startswith(prefix)]
+    if len(found) != 1:
+        fail("after a second import the scene has %s" % found)
+print("a second import replaces the first one's preview")
 
 # Bodies, from three frames of the buoyancy sample.
 import_bake(bodies_dir)

@@ -43,8 +43,8 @@ class ImportAirtrapBake(bpy.types.Operator, ImportHelper):
         description="A camera framing the bake, a sun, a sky, a floor and quick Cycles settings")
 
     def execute(self, context):
-        folder = importer.folder_of(self.directory or self.filepath)
         try:
+            folder = importer.folder_of(self.directory or self.filepath)
             report = importer.import_bake(folder, context, importer.ImportOptions(
                 self.bubble_shape, self.import_volume, self.preview_scene))
         except bake_listing.ListingError as error:

@@ -2,12 +2,16 @@
 # name, fps and frame range, and per sequence its files, frames and up axis. Pure Python, so that
 # it reads the same inside and outside Blender.
 import json
+import math
 import os
 import re
 
 FORMAT_NAME = "airtrap-export"
 VERSION = 1
 DEFAULT_FPS = 30.0
+# More frames than a sequence's span may cover: a listing claiming more is damaged, and the
+# import would make one object per frame of it.
+MAX_FRAME_SPAN = 100000
 
 # A sequence file as `airtrap-cli export` names it: stem, frame number (four digits or more), ext.
 SEQUENCE_FILE = re.compile(r"^(water|bubbles|subgrid|bodies|particles|fluid)_(\d{4,})\.(obj|ply|vdb)$")
@@ -70,15 +74,20 @@ class BakeListing:
         # What the import should tell the user about the listing itself.
         self.warnings = []
         self.scene_name = str(json_data.get("scene", os.path.basename(directory.rstrip("/"))))
-        self.fps = float(json_data.get("fps", 30.0))
+        self.fps = float(json_data.get("fps", DEFAULT_FPS))
+        if not math.isfinite(self.fps) or self.fps <= 0.0:
+            raise ValueError("fps %r is not a positive number" % self.fps)
         self.frame_start = int(json_data.get("frame_start", 1))
         self.frame_end = int(json_data.get("frame_end", self.frame_start))
         self.container = _container_box(json_data.get("container"))
         self.sequences = {
             key: Sequence(key, entry, directory)
             for key, entry in json_data.get("sequences", {}).items()
-            if isinstance(entry, dict)
+            if isinstance(entry, dict) and entry.get("frames")
         }
+        for sequence in self.sequences.values():
+            if sequence.frames[-1] - sequence.frames[0] >= MAX_FRAME_SPAN:
+                raise ValueError("%s spans frames %s" % (sequence.key, sequence.frame_span()))
 
     def sequence(self, key):
         return self.sequences.get(key)
@@ -119,28 +128,38 @@ def _up_axis_of(path):
 
 def listing_from_file_names(directory):
     """The listing of a folder of sequence files without export.json (copied without it), or
-    None when the folder holds none. The frames come from the
-    file names, the up axis from the first OBJ or PLY header; the frame rate is not known."""
+    None when the folder holds none. The frames come from the file names, the up axes from the
+    OBJ and PLY headers; the frame rate is not known."""
     frames = {}
-    for name in os.listdir(directory):
+    try:
+        names = os.listdir(directory)
+    except OSError as error:
+        raise ListingError("%s cannot be read: %s" % (directory, error.strerror or error))
+    for name in names:
         match = SEQUENCE_FILE.match(name)
         if match:
             frames.setdefault("%s.%s" % (match.group(1), match.group(3)), []).append(
                 int(match.group(2)))
     if not frames:
         return None
-    up_axis = None
-    for key in sorted(k for k in frames if not k.endswith(".vdb")):
+    # Each OBJ and PLY sequence says its axis in its first file's header; a volume says it in
+    # OpenVDB metadata Blender does not show, so it takes the others' (exported together).
+    axes = {}
+    for key in frames:
         stem, _, ext = key.rpartition(".")
-        up_axis = _up_axis_of(os.path.join(directory,
-                                           sequence_file_name(stem, min(frames[key]), ext)))
-        if up_axis:
-            break
+        if ext != "vdb":
+            axes[key] = _up_axis_of(os.path.join(directory,
+                                                 sequence_file_name(stem, min(frames[key]), ext)))
+    up_axis = next((axes[key] for key in sorted(axes) if axes[key]), None)
     everything = [frame for listed in frames.values() for frame in listed]
-    listing = BakeListing(directory, {
-        "fps": DEFAULT_FPS, "frame_start": min(everything), "frame_end": max(everything),
-        "sequences": {key: {"frames": listed, "up_axis": up_axis or "y"}
-                      for key, listed in frames.items()}})
+    try:
+        listing = BakeListing(directory, {
+            "fps": DEFAULT_FPS, "frame_start": min(everything), "frame_end": max(everything),
+            "sequences": {key: {"frames": listed, "up_axis": axes.get(key) or up_axis or "y"}
+                          for key, listed in frames.items()}})
+    except ValueError as error:
+        raise ListingError("%s has no export.json, and its file names make no sequence (%s)"
+                           % (directory, error))
     listing.warnings.append(
         "%s has no export.json: frames %d–%d read from the file names, %s up from their headers, "
         "%g frames per second assumed (export again with `airtrap-cli export` to list them)"
@@ -182,12 +201,12 @@ def read_listing(directory):
                            % (path, data.get("version"), VERSION))
     try:
         listing = BakeListing(directory, data)
-    except (TypeError, ValueError, AttributeError) as error:
-        raise ListingError("%s has a malformed entry (%s): `fps` and `frame_*` must be numbers, "
-                           "`sequences` an object whose entries list integer `frames`"
-                           % (path, error))
+    except (TypeError, ValueError, AttributeError, OverflowError) as error:
+        raise ListingError("%s has a malformed entry (%s): `fps` must be a positive number, "
+                           "`frame_*` integers, `sequences` an object whose entries list integer "
+                           "`frames` (fewer than %d apart)" % (path, error, MAX_FRAME_SPAN))
     if not listing.sequences:
-        raise ListingError("%s lists no sequences: export with `airtrap-cli export %s ...`"
-                           % (path, directory))
+        raise ListingError("%s lists no sequences with frames: export with "
+                           "`airtrap-cli export %s ...`" % (path, directory))
     listing.check_frame_ranges()
     return listing

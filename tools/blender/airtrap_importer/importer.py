@@ -121,7 +121,7 @@ def _points_object(columns, name, up_axis):
     for i in range(count):
         positions.extend(_to_blender_axes(columns["x"][i], columns["y"][i], columns["z"][i],
                                           up_axis))
-        if "vx" in columns:
+        if all(name in columns for name in ("vx", "vy", "vz")):
             velocities.extend(_to_blender_axes(columns["vx"][i], columns["vy"][i],
                                                columns["vz"][i], up_axis))
     mesh.vertices.add(count)
@@ -246,4 +246,7 @@ def import_bake(directory, context, options=None):
 
 def folder_of(path):
     """The folder the file browser points at, whether a file or the folder was chosen."""
+    if not path:
+        raise bake_listing.ListingError("no folder chosen: choose an export folder (the one "
+                                        "holding export.json)")
     return path if os.path.isdir(path) else os.path.dirname(path)

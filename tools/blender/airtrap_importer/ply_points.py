@@ -8,6 +8,9 @@ TYPES = {"float": "f", "float32": "f", "double": "d", "float64": "d", "uint": "I
          "int8": "b", "ushort": "H", "uint16": "H", "short": "h", "int16": "h"}
 
 
+POSITION = ("x", "y", "z")
+
+
 class PlyError(Exception):
     """A file that is not a PLY point file of the kind Airtrap writes, naming what is wrong."""
 
@@ -26,6 +29,8 @@ def read_points(path):
     for line in header:
         words = line.split()
         if words[:2] == ["element", "vertex"] and len(words) == 3:
+            if not words[2].isdigit():
+                raise PlyError("%s: %r does not give a point count" % (path, line))
             count, in_vertex = int(words[2]), True
         elif words[:1] == ["element"]:
             in_vertex = False
@@ -36,6 +41,10 @@ def read_points(path):
             names.append(words[2])
     if count is None:
         raise PlyError("%s has no vertex element" % path)
+    missing = [axis for axis in POSITION if axis not in names]
+    if missing:
+        raise PlyError("%s has no %s property: its points have no position"
+                       % (path, " ".join(missing)))
     record = struct.Struct("<" + codes)
     body = data[end + len(b"end_header\n"):]
     if len(body) < count * record.size:

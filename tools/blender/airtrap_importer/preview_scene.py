@@ -15,6 +15,9 @@ SUN_AZIMUTH = math.radians(-120.0)
 SUN_ELEVATION = math.radians(50.0)
 LENS_MM = 35.0
 FRAME_MARGIN = 1.15
+# Marks the collection an import's preview lives in.
+PREVIEW_TAG = "airtrap_preview"
+_DATA_BLOCKS = {"Camera": "cameras", "SunLight": "lights", "Mesh": "meshes"}
 
 
 def _bounds(collections):
@@ -87,6 +90,10 @@ def _sun(collection):
 
 def _sky(scene):
     """A clear daylight sky lighting the scene softly; the sun lamp gives the shadows."""
+    world = bpy.data.worlds.get("Airtrap sky")
+    if world is not None:
+        scene.world = world
+        return
     world = bpy.data.worlds.new("Airtrap sky")
     world.use_nodes = True
     nodes = world.node_tree.nodes
@@ -156,6 +163,23 @@ def _render_settings(scene):
     scene.render.resolution_percentage = 100
 
 
+def _remove_earlier_previews():
+    """An earlier import's preview goes, with its data: a second import is framed and lit once,
+    by its own camera and sun."""
+    for collection in [c for c in bpy.data.collections if c.get(PREVIEW_TAG)]:
+        for obj in list(collection.objects):
+            data = obj.data
+            materials = list(data.materials) if hasattr(data, "materials") else []
+            bpy.data.objects.remove(obj)
+            blocks = _DATA_BLOCKS.get(type(data).__name__)
+            if blocks is not None and data.users == 0:
+                getattr(bpy.data, blocks).remove(data)
+            for material in materials:
+                if material is not None and material.users == 0:
+                    bpy.data.materials.remove(material)
+        bpy.data.collections.remove(collection)
+
+
 def _union(a, b):
     if a is None or b is None:
         return a or b
@@ -176,7 +200,9 @@ def set_up(scene, bake_collection, frame_collections, container):
     if bounds is None:
         return None
     low, high = bounds
+    _remove_earlier_previews()
     preview = bpy.data.collections.new("Preview")
+    preview[PREVIEW_TAG] = True
     bake_collection.children.link(preview)
     _render_settings(scene)
     _camera(scene, preview, low, high)

@@ -15,6 +15,12 @@ def import_volume_sequence(sequence, name, collection, report):
     first, last = sequence.frames[0], sequence.frames[-1]
     volume = bpy.data.volumes.new(name)
     volume.filepath = sequence.path(present[0] if present else first)
+    # The grids load for the current frame; as a single file first, so that they do now and the
+    # velocity grid can be named (Blender checks the name against the loaded grids).
+    volume.grids.load()
+    if any(grid.name == "vel" for grid in volume.grids):
+        volume.velocity_grid = "vel"
+        volume.velocity_unit = 'SECOND'
     volume.is_sequence = True
     # Blender numbers a sequence's files from the file at frame_start as 1, plus frame_offset:
     # with the offset first - 1 the file of frame f is fluid_f.vdb, as exported.
@@ -22,11 +28,6 @@ def import_volume_sequence(sequence, name, collection, report):
     volume.frame_offset = first - 1
     volume.frame_duration = last - first + 1
     volume.sequence_mode = 'CLIP'
-    # Blender checks the name against the grids it has loaded: load them first.
-    volume.grids.load()
-    if any(grid.name == "vel" for grid in volume.grids):
-        volume.velocity_grid = "vel"
-        volume.velocity_unit = 'SECOND'
     volume.materials.append(materials.volume_material())
     obj = bpy.data.objects.new(name, volume)
     if sequence.up_axis != "z":
