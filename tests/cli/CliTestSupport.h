@@ -1,5 +1,8 @@
 #pragma once
 // Helpers for the airtrap-cli tests: run the real binary, write tiny scenes, read files back.
+#include "bubbles/BubbleState.h"
+#include "core/Math.h"
+
 #include <QProcess>
 #include <QtTest/QtTest>
 #include <cstdint>
@@ -71,6 +74,26 @@ inline std::vector<std::uint8_t> readBytes(const std::string& path) {
 inline void writeBytes(const std::string& path, const std::vector<std::uint8_t>& bytes) {
     std::ofstream out(path, std::ios::binary | std::ios::trunc);
     out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+}
+
+//! A bubble of `radius` at `centre`, rising at `velocity`, `age` seconds old.
+inline BubbleState bubbleAt(std::uint32_t id, const Vec3d& centre, double radius,
+                            const Vec3d& velocity, double age) {
+    BubbleState bubble;
+    bubble.id = id;
+    bubble.birthFrame = 2;
+    bubble.radius = radius;
+    bubble.body.position = centre;
+    bubble.body.linearVelocity = velocity;
+    bubble.age = age;
+    return bubble;
+}
+
+//! The tiny scene with bubbles switched on.
+inline std::string tinyBubbleSceneText(int endFrame) {
+    nlohmann::json scene = nlohmann::json::parse(tinySceneText(endFrame));
+    scene["bubbles"] = {{"enabled", true}};
+    return scene.dump(4) + "\n";
 }
 
 inline nlohmann::json readJson(const std::string& path) {
