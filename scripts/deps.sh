@@ -19,8 +19,9 @@ packages=(
     clang-16 libclang-rt-16-dev llvm-16
     # the Blender add-on's tests (tools/blender, label blender): Blender 3.4, run headless
     blender
-    # the farm's tests (label farm): a one-node Slurm cluster (scripts/slurm-local.sh)
-    slurm-wlm slurm-client munge
+    # the farm's tests (label farm): a one-node Slurm cluster (scripts/slurm-local.sh), and
+    # Python to read the JSON the farm writes
+    slurm-wlm slurm-client munge python3
 )
 
 missing=()

@@ -177,7 +177,7 @@ ExitCode BakeCommand::run() {
     if (outcome == Baker::Outcome::Stopped) {
         std::cerr << "stopped after frame " << lastCachedFrame()
                   << "; resume with: " << resumeCommand(range) << '\n';
-        return ExitCode::Stopped;
+        return SignalStopper::stoppedExitCode();
     }
     return summarise(
         progress, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());

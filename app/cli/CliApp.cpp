@@ -3,8 +3,10 @@
 #include "BakeCommand.h"
 #include "CheckCommand.h"
 #include "ExportCommand.h"
+#include "FarmCommand.h"
 #include "InfoCommand.h"
 #include "PostCommand.h"
+#include "SchedulerError.h"
 #include "ValidateCommand.h"
 #include "core/Error.h"
 
@@ -27,6 +29,7 @@ CliApp::CliApp()
     commands_.push_back(std::make_unique<ExportCommand>());
     commands_.push_back(std::make_unique<PostCommand>());
     commands_.push_back(std::make_unique<CheckCommand>());
+    commands_.push_back(std::make_unique<FarmCommand>());
     for (const auto& command : commands_)
         command->addTo(app_);
 }
@@ -44,7 +47,7 @@ std::string CliApp::usageMessage(const CLI::ParseError& error, int argc, char** 
     // typo that caused it; name the typo instead.
     if (app_.get_subcommands().empty() && argc > 1 && argv[1][0] != '-')
         return "unknown command '" + std::string(argv[1]) +
-               "'; the commands are validate, bake, info, export, post";
+               "'; the commands are validate, bake, info, post, export, check, farm";
     for (const CLI::App* sub : app_.get_subcommands()) {
         const std::vector<std::string> extra = sub->remaining();
         if (!extra.empty())
@@ -89,6 +92,9 @@ int CliApp::run(int argc, char** argv) {
     } catch (const Error& error) {
         printError(error.what());
         return static_cast<int>(exitCodeFor(error.kind()));
+    } catch (const SchedulerError& error) {
+        printError(error.what());
+        return static_cast<int>(ExitCode::Scheduler);
     } catch (const std::exception& error) {
         printError(std::string("internal error: ") + error.what());
         return static_cast<int>(ExitCode::Internal);

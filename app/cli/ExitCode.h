@@ -13,7 +13,9 @@ enum class ExitCode : int {
     Io = 4,           //!< cannot read or write: permission denied, disk full
     BlowUp = 5,       //!< the simulation blew up; every good frame is kept
     NotAvailable = 6, //!< a stage or format that comes in a later version
+    Scheduler = 7,    //!< farm: no scheduler, or it refused a job or did not answer
     Internal = 70,    //!< an unexpected failure, i.e. a bug (EX_SOFTWARE)
+    Requeue = 75,     //!< stopped by SIGUSR1 (a scheduler's warning); run again (EX_TEMPFAIL)
     Stopped = 130,    //!< stopped by Ctrl-C or SIGTERM; the cache is consistent and resumable
 };
 
@@ -43,7 +45,10 @@ inline constexpr const char* kExitCodeHelp = R"(Exit codes:
   4    I/O error (permission denied, disk full); the cache stays consistent
   5    simulation blow-up (the message names the frame and the likely cause)
   6    not available yet (a later stage or format)
+  7    farm: the scheduler is missing, refused a job or did not answer (nothing stays queued)
   70   internal error (please report it)
+  75   stopped by SIGUSR1 (a scheduler's time-limit or preemption warning); the cache is
+       consistent: the same command continues (farm jobs requeue themselves)
   130  stopped by Ctrl-C or SIGTERM; continue with `bake --resume`)";
 
 } // namespace airtrap::cli

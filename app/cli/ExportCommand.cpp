@@ -47,14 +47,25 @@ void ExportCommand::addTo(CLI::App& parent) {
                      "Change a render setting for this export, e.g. bubble_mesh.magnitude=0.2 "
                      "(surface_mesh.*, bubble_mesh.* and subgrid_bubbles.* only)");
     app_->add_flag("--quiet,-q", quiet_, "No progress line and no summary");
+    CLI::Option* noListing =
+        app_->add_flag("--no-listing", noListing_,
+                       "Write the frames but not export.json, for runs over other frames into "
+                       "the same folder at once (a farm's job array)");
+    app_->add_flag("--listing-only", listingOnly_,
+                   "Write no frame: list the files of this format and --frames already in --out "
+                   "in export.json (after --no-listing runs)")
+        ->excludes(noListing);
 }
 
 ExitCode ExportCommand::summarise(const ExportReport& report) const {
     if (report.stopped) {
         std::cerr << "stopped after " << report.framesWritten << " frame(s) in " << outDir_ << '\n';
-        return ExitCode::Stopped;
+        return SignalStopper::stoppedExitCode();
     }
-    if (!quiet_ && !report.files.empty())
+    if (!quiet_ && listingOnly_)
+        std::cout << "listed " << report.files.size() << " file(s) in " << outDir_
+                  << "/export.json\n";
+    else if (!quiet_ && !report.files.empty())
         std::cout << "exported " << report.framesWritten << " frame(s), " << report.files.size()
                   << " file(s) to " << outDir_ << " (" << report.files.front() << " … "
                   << report.files.back() << ")\n";
@@ -73,7 +84,10 @@ ExitCode ExportCommand::run() {
         FrameRange::selectListed(cache.frames(), framesText_, cache.directory());
     const ExportOptions options{.format = SequenceExporter::parseFormat(format_),
                                 .outDir = outDir_,
-                                .up = upAxisNamed(up_).value_or(UpAxis::Y)};
+                                .up = upAxisNamed(up_).value_or(UpAxis::Y),
+                                .listing = listingOnly_ ? ExportListingMode::Only
+                                           : noListing_ ? ExportListingMode::Leave
+                                                        : ExportListingMode::Update};
     SequenceExporter exporter(cache, scene, options);
     // The same progress line as post's: a VDB export of a long bake takes minutes.
     const bool inPlace = !quiet_ && ::isatty(STDERR_FILENO);

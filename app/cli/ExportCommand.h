@@ -1,5 +1,6 @@
 #pragma once
-// `airtrap-cli export DIR --format obj|vdb|ply --out OUTDIR [--frames A:B] [--up y|z]`: the
+// `airtrap-cli export DIR --format obj|vdb|ply --out OUTDIR [--frames A:B] [--up y|z]
+// [--no-listing | --listing-only]`: the
 // sequences of docs/CLI.md "export", written by the engine's SequenceExporter (the editor's Export
 // dialog uses the same). OBJ and VDB need the post stage's results and refuse, before writing
 // anything, frames that lack them.
@@ -29,6 +30,8 @@ private:
     std::string up_ = "y";
     std::vector<std::string> overrides_;
     bool quiet_ = false;
+    bool noListing_ = false;
+    bool listingOnly_ = false;
 };
 
 } // namespace airtrap::cli

@@ -1,5 +1,6 @@
 #include "InfoReport.h"
 
+#include "cache/FrameFile.h"
 #include "scene/SceneJson.h"
 #include "sim/SceneSetup.h"
 
@@ -151,6 +152,10 @@ nlohmann::ordered_json InfoReport::toJson() const {
     if (frame_.stats.pressureSolve.steps > 0)
         json["pressure_solve"] = pressureSolveJson();
     json["cache"] = cacheJson();
+    // What the frame holds without its wall-clock statistics: equal for two bakes that computed
+    // the same state, e.g. a farm's requeued bake and an undisturbed one (docs/FARM.md).
+    const std::vector<std::uint8_t> state = encodeFrame(frame_.state, FrameStats{});
+    json["state_crc32"] = computeCrc32(state.data(), state.size());
     return json;
 }
 

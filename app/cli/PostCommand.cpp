@@ -29,6 +29,13 @@ void PostCommand::addTo(CLI::App& parent) {
     app_->add_option("--threads,-j", threads_, "Worker threads (0 = all cores)")
         ->check(CLI::Range(0, 1024));
     app_->add_flag("--quiet,-q", quiet_, "No progress line and no summary");
+    app_->add_option("--part", part_,
+                     "For runs over other frames at the same time (a farm's job array): list "
+                     "results in post/parts/NAME.json, merged by the next run without --part; "
+                     "leaves out the sub-grid pass");
+    app_->add_flag("--no-subgrid", noSubgrid_,
+                   "Leave out the sub-grid bubbles (they go in frame order: run post again "
+                   "without it over the whole range)");
 }
 
 void PostCommand::summariseSubgrid(const SubgridReport& report) const {
@@ -50,7 +57,7 @@ ExitCode PostCommand::summarise(const PostReport& report, const std::string& sto
     if (report.stopped) {
         std::cerr << "stopped after " << report.made
                   << " frame(s); run post again to finish (finished frames are kept)\n";
-        return ExitCode::Stopped;
+        return SignalStopper::stoppedExitCode();
     }
     if (!quiet_) {
         char perFrame[32];
@@ -60,8 +67,11 @@ ExitCode PostCommand::summarise(const PostReport& report, const std::string& sto
             std::cout << ", " << report.alreadyCurrent << " already current";
         if (report.made > 0)
             std::cout << " (" << perFrame << " s per frame)";
+        if (report.mergedFrames > 0)
+            std::cout << ", " << report.mergedFrames << " listed from part runs";
         std::cout << " in " << ProgressLine::clock(report.seconds) << " into " << storeDir << '\n';
-        summariseSubgrid(report.subgrid);
+        if (part_.empty() && !noSubgrid_)
+            summariseSubgrid(report.subgrid);
     }
     if (!report.damaged.empty())
         throw Error(ErrorKind::CacheCorrupt, std::to_string(report.damaged.size()) +
@@ -76,7 +86,7 @@ ExitCode PostCommand::run() {
     const std::vector<int> frames =
         FrameRange::selectListed(cache.frames(), framesText_, cache.directory());
     const ThreadLimit limit(threads_);
-    PostStage stage(cache, scene);
+    PostStage stage(cache, scene, PostOptions{.part = part_, .subgrid = !noSubgrid_});
 
     const bool inPlace = !quiet_ && ::isatty(STDERR_FILENO);
     const auto total = frames.size();

@@ -1,5 +1,6 @@
 #pragma once
-// `airtrap-cli post DIR [--frames A:B] [--set surface_mesh.key=value ...] [--threads N]`: makes
+// `airtrap-cli post DIR [--frames A:B] [--set surface_mesh.key=value ...] [--threads N]
+// [--part NAME] [--no-subgrid]`: makes
 // the render outputs of a baked cache (water surfaces and volumes, sub-grid bubbles) and keeps
 // them beside it (DIR/post, PostStage), ready for `export` and the editor. Re-running only redoes
 // frames that were re-baked since, or all of them when the render settings changed; no
@@ -30,6 +31,8 @@ private:
     std::vector<std::string> overrides_;
     int threads_ = 0;
     bool quiet_ = false;
+    std::string part_;
+    bool noSubgrid_ = false;
 };
 
 } // namespace airtrap::cli

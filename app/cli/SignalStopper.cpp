@@ -20,9 +20,14 @@ extern "C" void onStopSignal(int signal) {
     if (Interrupter* interrupter = target.load())
         interrupter->requestStop();
     // write() is async-signal-safe; iostreams are not.
-    static const char message[] = "\nnote: stopping after the current step (Ctrl-C again to quit "
-                                  "at once)\n";
-    [[maybe_unused]] const ssize_t ignored = ::write(STDERR_FILENO, message, sizeof message - 1);
+    static const char byUser[] = "\nnote: stopping after the current step (Ctrl-C again to quit "
+                                 "at once)\n";
+    static const char byScheduler[] = "\nnote: SIGUSR1 (time limit or preemption ahead): "
+                                      "stopping after the current step\n";
+    const bool scheduled = signal == SIGUSR1;
+    [[maybe_unused]] const ssize_t ignored =
+        ::write(STDERR_FILENO, scheduled ? byScheduler : byUser,
+                (scheduled ? sizeof byScheduler : sizeof byUser) - 1);
 }
 
 void install(int signal, struct sigaction& old) {
@@ -41,16 +46,22 @@ SignalStopper::SignalStopper(Interrupter& interrupter) {
     target.store(&interrupter);
     install(SIGINT, oldInterrupt_);
     install(SIGTERM, oldTerminate_);
+    install(SIGUSR1, oldUser1_);
 }
 
 SignalStopper::~SignalStopper() {
     ::sigaction(SIGINT, &oldInterrupt_, nullptr);
     ::sigaction(SIGTERM, &oldTerminate_, nullptr);
+    ::sigaction(SIGUSR1, &oldUser1_, nullptr);
     target.store(nullptr);
 }
 
 int SignalStopper::received() {
     return receivedSignal;
+}
+
+ExitCode SignalStopper::stoppedExitCode() {
+    return receivedSignal == SIGUSR1 ? ExitCode::Requeue : ExitCode::Stopped;
 }
 
 } // namespace airtrap::cli

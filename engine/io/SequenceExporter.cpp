@@ -11,9 +11,12 @@
 #include "post/SequenceName.h"
 #include "post/WaterVolumeFile.h"
 
+#include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <set>
 
 namespace airtrap {
 
@@ -195,16 +198,55 @@ bool SequenceExporter::exportFrame(int frame, ExportReport& report) {
     return true;
 }
 
+ExportReport SequenceExporter::listFilesPresent(const std::vector<int>& frames) const {
+    const std::set<int> wanted(frames.begin(), frames.end());
+    std::string extension = ".";
+    extension += exportFormatName(options_.format);
+    ExportReport report;
+    std::error_code error;
+    for (const auto& item : std::filesystem::directory_iterator(options_.outDir, error)) {
+        const std::string name = item.path().filename().string();
+        if (!name.ends_with(extension))
+            continue;
+        const std::string stem = name.substr(0, name.size() - extension.size());
+        const std::size_t underscore = stem.rfind('_');
+        const std::string digits =
+            underscore == std::string::npos ? std::string() : stem.substr(underscore + 1);
+        const bool numbered = !digits.empty() && digits.size() <= 9 &&
+                              std::all_of(digits.begin(), digits.end(),
+                                          [](unsigned char c) { return std::isdigit(c); });
+        if (numbered && wanted.contains(std::stoi(digits)))
+            report.files.push_back(name);
+    }
+    if (error)
+        throw Error(ErrorKind::Io,
+                    AtomicFile::errorMessage("cannot list folder", options_.outDir, error.value()));
+    std::sort(report.files.begin(), report.files.end());
+    writeListing(report.files);
+    return report;
+}
+
+void SequenceExporter::writeListing(const std::vector<std::string>& files) const {
+    ExportListing listing = ExportListing::readOrEmpty(options_.outDir);
+    listing.setScene(scene_, options_.up);
+    listing.addFiles(files, options_.up);
+    listing.write(options_.outDir);
+}
+
 ExportReport SequenceExporter::run(const std::vector<int>& frames, Interrupter& interrupter) {
     const auto start = std::chrono::steady_clock::now();
+    if (options_.listing == ExportListingMode::Only)
+        return listFilesPresent(frames);
     checkReady(frames);
     std::error_code error;
     std::filesystem::create_directories(options_.outDir, error);
     if (error)
         throw Error(ErrorKind::Io, AtomicFile::errorMessage("cannot create folder", options_.outDir,
                                                             error.value()));
-    // An export killed mid-write left its temporary; this one writes that file again.
-    AtomicFile::removeOrphanedTemporaries(options_.outDir);
+    // An export killed mid-write left its temporary; this one writes that file again. Runs
+    // beside others leave them: on another machine, a live writer's process is not seen here.
+    if (options_.listing == ExportListingMode::Update)
+        AtomicFile::removeOrphanedTemporaries(options_.outDir);
     ExportReport report;
     interrupter.start("export");
     for (std::size_t i = 0; i < frames.size(); ++i) {
@@ -217,10 +259,8 @@ ExportReport SequenceExporter::run(const std::vector<int>& frames, Interrupter& 
     }
     interrupter.end();
     // Also after a stop: every file written is whole, and the listing says which they are.
-    ExportListing listing = ExportListing::readOrEmpty(options_.outDir);
-    listing.setScene(scene_, options_.up);
-    listing.addFiles(report.files, options_.up);
-    listing.write(options_.outDir);
+    if (options_.listing == ExportListingMode::Update)
+        writeListing(report.files);
     report.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return report;

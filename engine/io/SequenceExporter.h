@@ -31,10 +31,19 @@
 
 namespace airtrap {
 
+//! Who writes export.json when several runs export other frames into one folder at once (a
+//! farm's job array, docs/FARM.md): rewriting it from each would lose another run's frames.
+enum class ExportListingMode {
+    Update, //!< write the frames, then add them to export.json (one run at a time)
+    Leave,  //!< write the frames only; leave export.json and other runs' temporaries alone
+    Only,   //!< write no frame: list in export.json the format's files of the frames present
+};
+
 struct ExportOptions {
     ExportFormat format = ExportFormat::Obj;
     std::string outDir;
     UpAxis up = UpAxis::Y;
+    ExportListingMode listing = ExportListingMode::Update;
 };
 
 struct ExportReport {
@@ -67,6 +76,9 @@ private:
     std::vector<std::string> comments(const FrameData& data) const;
     void writeObjFiles(const FrameData& data, ExportReport& report) const;
     void writePlyFiles(const FrameData& data, ExportReport& report) const;
+    //! ExportListingMode::Only: lists the files of this format and `frames` in the folder.
+    ExportReport listFilesPresent(const std::vector<int>& frames) const;
+    void writeListing(const std::vector<std::string>& files) const;
     //! The scene makes sub-grid bubbles: it simulates bubbles and sheds some.
     bool exportsSubgrid() const;
     //! True when frame `frame` has every post result the format needs, current.

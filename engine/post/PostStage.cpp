@@ -13,6 +13,7 @@
 #include <chrono>
 #include <exception>
 #include <mutex>
+#include <utility>
 
 namespace airtrap {
 
@@ -24,9 +25,12 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 
 } // namespace
 
-PostStage::PostStage(const FrameCache& cache, const Scene& scene)
-    : cache_(cache), scene_(scene), solids_(scene),
-      store_(PostStore::openOrEmpty(cache.directory(), storeDamage_)), subgrid_(cache, scene) {
+PostStage::PostStage(const FrameCache& cache, const Scene& scene, PostOptions options)
+    : cache_(cache), scene_(scene), options_(std::move(options)), solids_(scene),
+      store_(options_.part.empty()
+                 ? PostStore::openOrEmpty(cache.directory(), storeDamage_)
+                 : PostStore::openPart(cache.directory(), options_.part, storeDamage_)),
+      subgrid_(cache, scene) {
     store_.useSettings(settingsOf(scene_));
 }
 
@@ -80,6 +84,17 @@ void PostStage::addSubgridBubbles(int lastFrame, Interrupter& interrupter, PostR
         report.damaged.push_back(damaged);
 }
 
+void PostStage::prepareStore(PostReport& report) {
+    // Part runs work beside each other, perhaps on other machines, where a temporary of a
+    // process that is not running here may be another machine's write under way.
+    if (!options_.part.empty())
+        return;
+    // A post killed mid-write left its temporaries (the sub-grid files share the folder); this
+    // run makes those results again.
+    AtomicFile::removeOrphanedTemporaries(store_.directory());
+    report.mergedFrames = store_.mergeParts(report.replacedLists);
+}
+
 PostReport PostStage::run(const std::vector<int>& frames, Interrupter& interrupter) {
     const auto start = std::chrono::steady_clock::now();
     PostReport report;
@@ -87,9 +102,7 @@ PostReport PostStage::run(const std::vector<int>& frames, Interrupter& interrupt
     for (const std::string* damage : replaced)
         if (!damage->empty())
             report.replacedLists.push_back(*damage);
-    // A post killed mid-write left its temporaries (the sub-grid files share the folder); this
-    // run makes those results again.
-    AtomicFile::removeOrphanedTemporaries(store_.directory());
+    prepareStore(report);
     interrupter.start("post");
     std::atomic<int> done{0};
     std::mutex progressMutex;
@@ -117,7 +130,8 @@ PostReport PostStage::run(const std::vector<int>& frames, Interrupter& interrupt
     interrupter.end();
     if (firstFailure)
         std::rethrow_exception(firstFailure);
-    if (!frames.empty() && !interrupter.stopRequested())
+    const bool subgrid = options_.subgrid && options_.part.empty();
+    if (subgrid && !frames.empty() && !interrupter.stopRequested())
         addSubgridBubbles(*std::max_element(frames.begin(), frames.end()), interrupter, report);
     report.stopped =
         (interrupter.stopRequested() && done < int(frames.size())) || report.subgrid.stopped;

@@ -28,6 +28,19 @@ struct PostReport {
     SubgridReport subgrid; //!< the sub-grid bubbles' pass, after the surfaces'
     //! A damaged post.json or subgrid.json, replaced by this run: "<path>: <reason>".
     std::vector<std::string> replacedLists;
+    int mergedFrames = 0; //!< frames listed from the part lists of earlier part runs
+};
+
+//! How one post run shares the store with others (docs/FARM.md).
+struct PostOptions {
+    //! Non-empty: the run lists what it makes in its own part list (PostStore::openPart), so
+    //! that runs over other frames may write at once; it leaves the sub-grid pass, which goes
+    //! in frame order, to the run that merges the parts. Empty: the run merges the part lists
+    //! others left, then works on post.json.
+    std::string part;
+    //! False leaves the sub-grid pass out (paper §4.2: it carries each frame's bubbles to the
+    //! next, so it cannot be split over frame chunks).
+    bool subgrid = true;
 };
 
 class PostStage {
@@ -36,7 +49,7 @@ public:
     //! perhaps with its render settings changed. Loads mesh bodies (Error(InvalidInput) when one
     //! cannot be read) and opens the store; a damaged post.json is started afresh
     //! (PostReport::replacedLists).
-    PostStage(const FrameCache& cache, const Scene& scene);
+    PostStage(const FrameCache& cache, const Scene& scene, PostOptions options = {});
 
     //! The render settings as the store records them.
     static nlohmann::json settingsOf(const Scene& scene);
@@ -55,8 +68,12 @@ private:
     //! The sub-grid pass up to `lastFrame`, its damaged frame added to the report's list.
     void addSubgridBubbles(int lastFrame, Interrupter& interrupter, PostReport& report);
 
+    //! Before the frames: a whole run clears what killed runs left and merges the part lists.
+    void prepareStore(PostReport& report);
+
     const FrameCache& cache_;
     Scene scene_;
+    PostOptions options_;
     SceneSolids solids_;
     std::string storeDamage_; //!< why post.json was started afresh ("" when it was whole)
     PostStore store_;

@@ -8,6 +8,8 @@
 #include "post/SequenceName.h"
 #include "post/WaterVolumeFile.h"
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 
 namespace airtrap {
@@ -78,6 +80,65 @@ PostStore PostStore::openOrEmpty(const std::string& cacheDir, std::string& damag
     const std::string dir = (std::filesystem::path(cacheDir) / kFolderName).string();
     return PostStore(dir, ResultList<PostFrameEntry>::openOrEmpty(
                               dir + "/" + kManifestName, kPostFormatName, kFormatVersion, damage));
+}
+
+PostStore PostStore::openPart(const std::string& cacheDir, const std::string& part,
+                              std::string& damage) {
+    const bool plain =
+        !part.empty() && part.size() <= 64 && std::all_of(part.begin(), part.end(), [](char c) {
+            return std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_';
+        });
+    if (!plain)
+        throw Error(ErrorKind::InvalidInput,
+                    "part name '" + part +
+                        "': expected 1 to 64 letters, digits, '-' or '_' (it names a file)");
+    PostStore store = openOrEmpty(cacheDir, damage);
+    const std::string partsDir = store.dir_ + "/" + kPartsFolderName;
+    createResultFolder(partsDir);
+    store.results_.moveTo(partsDir + "/" + part + ".json");
+    return store;
+}
+
+int PostStore::mergeParts(std::vector<std::string>& damaged) {
+    const std::filesystem::path partsDir = std::filesystem::path(dir_) / kPartsFolderName;
+    std::error_code error;
+    if (!std::filesystem::is_directory(partsDir, error))
+        return 0;
+    std::vector<std::filesystem::path> parts;
+    for (const auto& item : std::filesystem::directory_iterator(partsDir, error))
+        if (item.path().extension() == ".json")
+            parts.push_back(item.path());
+    std::sort(parts.begin(), parts.end());
+    int merged = 0;
+    for (const std::filesystem::path& part : parts) {
+        merged += mergePart(part.string(), damaged);
+        std::filesystem::remove(part, error);
+    }
+    std::filesystem::remove(partsDir, error);
+    return merged;
+}
+
+int PostStore::mergePart(const std::string& partPath, std::vector<std::string>& damaged) {
+    std::string damage;
+    const auto part =
+        ResultList<PostFrameEntry>::openOrEmpty(partPath, kPostFormatName, kFormatVersion, damage);
+    if (!damage.empty())
+        damaged.push_back(damage);
+    if (part.settings() != settings())
+        return 0;
+    int merged = 0;
+    for (const PostFrameEntry& entry : part.entries()) {
+        const PostFrameEntry* listed = results_.find(entry.frame);
+        const bool known = listed != nullptr && listed->sourceCrc32 == entry.sourceCrc32 &&
+                           listed->waterCrc32 == entry.waterCrc32 &&
+                           listed->fluidCrc32 == entry.fluidCrc32;
+        if (known || !damageOf(entry).empty())
+            continue;
+        const std::lock_guard lock(mutex_);
+        results_.put(entry);
+        ++merged;
+    }
+    return merged;
 }
 
 void PostStore::useSettings(const nlohmann::json& settings) {

@@ -38,6 +38,7 @@ public:
     static constexpr int kFormatVersion = 1;
     static constexpr const char* kFolderName = "post";
     static constexpr const char* kManifestName = "post.json";
+    static constexpr const char* kPartsFolderName = "parts";
 
     //! The store of the cache in `cacheDir`; empty (nothing listed, no folder yet) when no post
     //! run has finished a frame. A damaged post.json → Error(CacheCorrupt) naming it.
@@ -45,6 +46,15 @@ public:
     //! open(), or an empty store when post.json is damaged (`damage` says how): what it listed
     //! is made again by the run that writes into it.
     static PostStore openOrEmpty(const std::string& cacheDir, std::string& damage);
+
+    //! The store as a run that writes only some frames sees it while other runs write other
+    //! frames at once (a farm's job array, docs/FARM.md): it starts with post.json's list (or an
+    //! empty one when post.json is damaged, `damage` says how) but lists what it makes in
+    //! post/parts/`part`.json only, so no run rewrites another's entries. The next run that is
+    //! not a part merges the parts (mergeParts()). `part` is letters, digits, '-' and '_'
+    //! (Error(InvalidInput) otherwise).
+    static PostStore openPart(const std::string& cacheDir, const std::string& part,
+                              std::string& damage);
 
     PostStore(PostStore&& other) noexcept;
     PostStore(const PostStore&) = delete;
@@ -68,6 +78,12 @@ public:
     //! Error(Io) (disk full, permission denied) leaves the frame unlisted.
     void writeFrame(const PostFrameEntry& entry, const TriangleMesh& freeSurface,
                     const WaterVolume& volume);
+    //! Lists the entries of every part list in post/parts/ that were made with this store's
+    //! settings and whose files match their checksums (the rest is made again), then deletes
+    //! the part lists. Returns how many frames it listed; "<path>: <reason>" in `damaged` for
+    //! each part list that could not be read. Call it only when no part run is under way.
+    int mergeParts(std::vector<std::string>& damaged);
+
     //! Listed results; a damaged file → Error(CacheCorrupt) naming it, an unlisted frame →
     //! Error(InvalidInput) saying to run `post`.
     TriangleMesh readFreeSurface(int frame) const;
@@ -79,6 +95,8 @@ public:
 private:
     PostStore(std::string dir, ResultList<PostFrameEntry> results);
     void requireListed(int frame) const;
+    //! mergeParts() for one part list; returns how many frames it listed.
+    int mergePart(const std::string& partPath, std::vector<std::string>& damaged);
     //! "<path>: <reason>" when a file of `entry` is missing or differs from its listed CRC-32,
     //! else "".
     std::string damageOf(const PostFrameEntry& entry) const;

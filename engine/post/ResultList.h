@@ -86,6 +86,13 @@ public:
 
     const std::string& path() const { return path_; }
 
+    //! From now on the list is written to `path` instead (nothing is written yet): a post run
+    //! that writes only its own frames keeps its list apart from the shared one.
+    void moveTo(std::string path) { path_ = std::move(path); }
+
+    //! Every entry, sorted by frame.
+    const std::vector<Entry>& entries() const { return entries_; }
+
 private:
     ResultList(std::string path, std::string format, int version)
         : path_(std::move(path)), format_(std::move(format)), version_(version) {}

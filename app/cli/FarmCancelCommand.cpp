@@ -1,0 +1,31 @@
+#include "FarmCancelCommand.h"
+
+#include "FarmLayout.h"
+#include "FarmListing.h"
+#include "SlurmScheduler.h"
+#include "core/Error.h"
+
+#include <filesystem>
+#include <iostream>
+
+namespace airtrap::cli {
+
+void FarmCancelCommand::addTo(CLI::App& parent) {
+    app_ = parent.add_subcommand("cancel", "Cancel the queued and running jobs of a farm "
+                                           "submission");
+    app_->add_option("DIR", dir_, "The --out folder of farm submit")->required();
+}
+
+ExitCode FarmCancelCommand::run() {
+    const FarmLayout layout{std::filesystem::absolute(dir_)};
+    if (!std::filesystem::exists(layout.wedgesFile()))
+        throw Error(ErrorKind::InvalidInput, dir_ + " holds no farm submission (no wedges.json)");
+    const std::vector<std::string> ids = FarmListing::read(layout.wedgesFile().string()).jobIds();
+    SlurmScheduler::requireCommands();
+    SlurmScheduler::cancel(ids);
+    std::cout << "cancelled the " << ids.size() << " job(s) of " << layout.root.string()
+              << " that were still queued or running\n";
+    return ExitCode::Success;
+}
+
+} // namespace airtrap::cli

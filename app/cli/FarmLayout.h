@@ -1,0 +1,33 @@
+#pragma once
+// Where a farm submission keeps its files (docs/FARM.md "The output folder"): DIR/wedges.json,
+// one folder per wedge (its cache, post results and DIR/<wedge>/export), and DIR/farm with the
+// job scripts, submit.sh, the jobs' logs and the exit records the scripts leave.
+#include <filesystem>
+#include <string>
+
+namespace airtrap::cli {
+
+struct FarmLayout {
+    std::filesystem::path root;
+
+    std::filesystem::path wedgesFile() const { return root / "wedges.json"; }
+    std::filesystem::path farmDir() const { return root / "farm"; }
+    std::filesystem::path jobsDir() const { return farmDir() / "jobs"; }
+    std::filesystem::path logsDir() const { return farmDir() / "logs"; }
+    std::filesystem::path recordsDir() const { return farmDir() / "records"; }
+    std::filesystem::path submitScript() const { return farmDir() / "submit.sh"; }
+    std::filesystem::path wedgeDir(const std::string& wedge) const { return root / wedge; }
+    std::filesystem::path exportDir(const std::string& wedge) const {
+        return wedgeDir(wedge) / "export";
+    }
+    //! The record a job's script writes when it ends; `task` < 0 for a single job.
+    std::filesystem::path record(const std::string& jobKey, int task) const {
+        return recordsDir() / (jobKey + (task >= 0 ? "-" + std::to_string(task) : "") + ".txt");
+    }
+    //! The log of a job: %j is the job id, %A_%a the array's id and the task's index.
+    std::filesystem::path logPattern(const std::string& jobKey, bool array) const {
+        return logsDir() / (jobKey + (array ? "-%A_%a.log" : "-%j.log"));
+    }
+};
+
+} // namespace airtrap::cli

@@ -1,0 +1,43 @@
+#pragma once
+// `airtrap-cli farm status DIR [--json] [--lines N]`: each wedge's frames cached and each job's
+// (and array task's) state — from squeue while it is queued or running, then from the exit
+// record its script left in DIR/farm/records, or from sacct where the cluster keeps accounting;
+// the log tail of every failed task (docs/FARM.md "Watching").
+#include "Command.h"
+#include "FarmLayout.h"
+#include "FarmListing.h"
+#include "SlurmScheduler.h"
+
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace airtrap::cli {
+
+class FarmStatusCommand : public Command {
+public:
+    void addTo(CLI::App& parent) override;
+    ExitCode run() override;
+
+private:
+    struct Sources {
+        std::map<std::string, JobState> queued;
+        std::map<std::string, JobState> accounted;
+    };
+    //! The state of `job`, or of its array task `task` (≥ 0).
+    nlohmann::json taskState(const FarmJob& job, int task, const Sources& sources,
+                             const FarmLayout& layout) const;
+    nlohmann::json jobState(const FarmJob& job, const Sources& sources,
+                            const FarmLayout& layout) const;
+    nlohmann::json wedgeState(const FarmWedge& entry, const Sources& sources,
+                              const FarmLayout& layout) const;
+    void print(const nlohmann::json& status) const;
+    //! The last `lines_` lines of `path`, or "" when it cannot be read.
+    std::string tail(const std::string& path) const;
+
+    std::string dir_;
+    bool json_ = false;
+    int lines_ = 10;
+};
+
+} // namespace airtrap::cli

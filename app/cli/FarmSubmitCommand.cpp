@@ -1,0 +1,425 @@
+#include "FarmSubmitCommand.h"
+
+#include "FarmScriptWriter.h"
+#include "FrameRange.h"
+#include "SceneLoader.h"
+#include "SchedulerError.h"
+#include "ShellQuote.h"
+#include "SlurmScheduler.h"
+#include "cache/FrameCache.h"
+#include "core/AtomicFile.h"
+#include "core/Error.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <iostream>
+#include <map>
+
+namespace fs = std::filesystem;
+
+namespace airtrap::cli {
+
+namespace {
+
+const std::vector<std::string> kStages = {"bake", "post", "export"};
+const std::vector<std::string> kFormats = {"obj", "vdb", "ply"};
+
+std::string joined(const std::vector<std::string>& words, const std::string& separator) {
+    std::string text;
+    for (const std::string& word : words)
+        text += (text.empty() ? "" : separator) + word;
+    return text;
+}
+
+std::string absolute(const std::string& path) {
+    return fs::weakly_canonical(fs::absolute(path)).string();
+}
+
+//! `key=value` of --sbatch as sbatch's own `--key=value`.
+std::string sbatchOption(const std::string& assignment) {
+    const std::size_t equals = assignment.find('=');
+    const std::string key = assignment.substr(0, equals);
+    const bool plain = !key.empty() && std::isalpha(static_cast<unsigned char>(key[0])) &&
+                       key.find_first_not_of("abcdefghijklmnopqrstuvwxyz-") == std::string::npos;
+    if (!plain)
+        throw Error(ErrorKind::InvalidInput,
+                    "--sbatch " + assignment +
+                        ": expected key=value with an sbatch long option as key, e.g. "
+                        "partition=sim or time=02:00:00");
+    return equals == std::string::npos ? "--" + key : "--" + assignment;
+}
+
+FarmJob newJob(const std::string& key, const std::string& stage, const std::string& wedge) {
+    FarmJob job;
+    job.key = key;
+    job.stage = stage;
+    job.wedge = wedge;
+    return job;
+}
+
+} // namespace
+
+void FarmSubmitCommand::addTo(CLI::App& parent) {
+    app_ = parent.add_subcommand("submit", "Submit the bake, post and export of a scene and its "
+                                           "wedges as chained Slurm jobs");
+    app_->add_option("SCENE", scenePath_, "Scene file (JSON)")->required();
+    app_->add_option("--out,-o", outDir_,
+                     "Output folder on a file system every node shares: one folder per wedge, "
+                     "the job scripts in DIR/farm, DIR/wedges.json")
+        ->required();
+    app_->add_option("--wedge", wedges_,
+                     "key=VALUE in --set's syntax; repeat a key for more values, several keys "
+                     "make the cross product");
+    app_->add_option("--wedge-file", wedgeFile_,
+                     "JSON object: each key with the array of its values");
+    app_->add_option("--set", overrides_, "Override a scene value in every wedge (repeatable)");
+    app_->add_option("--stages", stages_, "Stages to run, in order: bake,post,export")
+        ->delimiter(',');
+    app_->add_option("--export", formats_, "Export formats: obj,vdb,ply (default obj)")
+        ->delimiter(',');
+    app_->add_option("--up", up_, "Up axis of the exported files: y (default) or z")
+        ->check(CLI::IsMember({"y", "z"}));
+    app_->add_option("--chunk", chunk_, "Frames per post and export task (default 10)")
+        ->check(CLI::Range(1, 100000));
+    app_->add_option("--frames", framesText_, "Frames: A:B (default: the scene's)");
+    app_->add_option("--threads,-j", threads_,
+                     "Cores per job (0 = a whole node for each job, the default)")
+        ->check(CLI::Range(0, 4096));
+    app_->add_option("--sbatch", sbatch_,
+                     "key=value passed to sbatch as --key=value (partition, account, time, "
+                     "mem, …; repeatable)");
+    app_->add_option("--signal", signal_,
+                     "Warning signal before the time limit, sbatch's --signal syntax (default "
+                     "B:USR1@120)");
+    app_->add_flag("--dry-run", dryRun_,
+                   "Write the job scripts and print the sbatch commands; "
+                   "submit nothing");
+    app_->add_flag("--overwrite", overwrite_,
+                   "Replace the bakes of an earlier submission with other values in --out");
+}
+
+bool FarmSubmitCommand::hasStage(const std::string& stage) const {
+    return std::find(stages_.begin(), stages_.end(), stage) != stages_.end();
+}
+
+void FarmSubmitCommand::checkOptions() const {
+    for (const std::string& stage : stages_)
+        if (std::find(kStages.begin(), kStages.end(), stage) == kStages.end())
+            throw Error(ErrorKind::InvalidInput,
+                        "--stages " + stage + ": expected bake, post or export");
+    for (const std::string& format : formats_)
+        if (std::find(kFormats.begin(), kFormats.end(), format) == kFormats.end())
+            throw Error(ErrorKind::InvalidInput,
+                        "--export " + format + ": expected obj, vdb or ply");
+    for (const std::string& option : sbatch_)
+        sbatchOption(option);
+    if (signal_.empty() || signal_.find_first_of(" \t\n'\"") != std::string::npos)
+        throw Error(ErrorKind::InvalidInput,
+                    "--signal " + signal_ + ": expected sbatch's syntax, e.g. B:USR1@120");
+}
+
+FarmListing FarmSubmitCommand::planWedges() const {
+    WedgePlan plan;
+    if (!wedgeFile_.empty())
+        plan.addFile(wedgeFile_);
+    plan.addAssignments(wedges_);
+    FarmListing listing{.scene = absolute(scenePath_), .overrides = overrides_, .wedges = {}};
+    const FarmLayout layout{absolute(outDir_)};
+    for (const Wedge& wedge : plan.wedges()) {
+        std::vector<std::string> assignments = overrides_;
+        for (const std::string& assignment : wedge.assignments())
+            assignments.push_back(assignment);
+        LoadedScene loaded;
+        try {
+            loaded = SceneLoader::load(scenePath_, assignments);
+        } catch (const Error& error) {
+            throw Error(error.kind(),
+                        "wedge " + wedge.name +
+                            (wedge.keys.empty()
+                                 ? ""
+                                 : " (--wedge " + joined(wedge.assignments(), ", ") + ")") +
+                            ": " + error.what());
+        }
+        const FrameRange range =
+            FrameRange::parse(framesText_, loaded.scene.frames.endFrame, "frames.end_frame");
+        listing.wedges.push_back(FarmWedge{.wedge = wedge,
+                                           .folder = layout.wedgeDir(wedge.name).string(),
+                                           .firstFrame = range.first(),
+                                           .lastFrame = range.last(),
+                                           .jobs = {}});
+    }
+    return listing;
+}
+
+void FarmSubmitCommand::prepareFolder(const FarmListing& listing, const FarmLayout& layout) const {
+    if (FrameCache::isCache(layout.root.string()))
+        throw Error(ErrorKind::InvalidInput,
+                    layout.root.string() + " is an Airtrap cache; give farm its own folder");
+    if (!fs::exists(layout.wedgesFile()))
+        return;
+    const FarmListing earlier = FarmListing::read(layout.wedgesFile().string());
+    if (earlier.sameBakes(listing))
+        return; // submitted again: each bake continues its cache (--resume)
+    if (!overwrite_)
+        throw Error(ErrorKind::InvalidInput,
+                    layout.root.string() + " holds the wedges of another submission (" +
+                        layout.wedgesFile().string() +
+                        "); add --overwrite to replace them, or choose another --out folder");
+    for (const FarmWedge& entry : earlier.wedges)
+        if (fs::path(entry.folder).parent_path() == layout.root)
+            fs::remove_all(entry.folder);
+    fs::remove_all(layout.farmDir());
+    fs::remove(layout.wedgesFile());
+}
+
+std::vector<std::string> FarmSubmitCommand::resourceOptions() const {
+    std::vector<std::string> options = {"--nodes=1", "--ntasks=1"};
+    options.push_back(threads_ > 0 ? "--cpus-per-task=" + std::to_string(threads_) : "--exclusive");
+    return options;
+}
+
+std::vector<std::string> FarmSubmitCommand::extraOptions() const {
+    std::vector<std::string> options;
+    for (const std::string& option : sbatch_)
+        options.push_back(sbatchOption(option));
+    return options;
+}
+
+std::vector<std::string> FarmSubmitCommand::chunks(const FarmWedge& entry) const {
+    std::vector<std::string> list;
+    for (int first = entry.firstFrame; first <= entry.lastFrame; first += chunk_)
+        list.push_back(std::to_string(first) + ":" +
+                       std::to_string(std::min(entry.lastFrame, first + chunk_ - 1)));
+    return list;
+}
+
+FarmJob FarmSubmitCommand::bakeJob(const FarmWedge& entry, const std::string& suffix,
+                                   const FarmLayout& layout) const {
+    FarmJob job = newJob("bake-" + suffix, "bake", entry.wedge.name);
+    job.script = (layout.jobsDir() / (job.key + ".sh")).string();
+    job.schedulerOptions = resourceOptions();
+    job.schedulerOptions.push_back("--requeue");
+    job.schedulerOptions.push_back("--signal=" + signal_);
+    // A requeued run writes to the same log: keep what the run before it said.
+    job.schedulerOptions.push_back("--open-mode=append");
+    std::vector<std::string> bake = {"bake",
+                                     absolute(scenePath_),
+                                     "--out",
+                                     entry.folder,
+                                     "--frames",
+                                     std::to_string(entry.firstFrame) + ":" +
+                                         std::to_string(entry.lastFrame),
+                                     "--resume",
+                                     "--threads",
+                                     std::to_string(threads_)};
+    for (const std::string& assignment : overrides_)
+        bake.insert(bake.end(), {"--set", assignment});
+    for (const std::string& assignment : entry.wedge.assignments())
+        bake.insert(bake.end(), {"--set", assignment});
+    FarmScriptWriter::write(job.script, FarmScriptWriter(layout).script(
+                                            job, "bake of wedge " + entry.wedge.name, {bake}));
+    return job;
+}
+
+std::vector<FarmJob> FarmSubmitCommand::postJobs(const FarmWedge& entry, const std::string& suffix,
+                                                 const std::vector<std::string>& after,
+                                                 const FarmLayout& layout) const {
+    const FarmScriptWriter writer(layout);
+    const std::string threads = std::to_string(threads_);
+    FarmJob chunked = newJob("post-" + suffix, "post", entry.wedge.name);
+    chunked.script = (layout.jobsDir() / (chunked.key + ".sh")).string();
+    chunked.frameChunks = chunks(entry);
+    chunked.after = after;
+    chunked.schedulerOptions = resourceOptions();
+    FarmScriptWriter::write(
+        chunked.script, writer.script(chunked,
+                                      "water surfaces and volumes of wedge " + entry.wedge.name +
+                                          ", one frame chunk per array task",
+                                      {{"post", entry.folder, "--frames", FarmScriptWriter::kFrames,
+                                        "--part", FarmScriptWriter::kPart, "--threads", threads}}));
+    // The sub-grid bubbles go in frame order, so one job does them once every chunk is done;
+    // the same run lists the chunks' results in post.json.
+    FarmJob merge = newJob("post-merge-" + suffix, "post-merge", entry.wedge.name);
+    merge.script = (layout.jobsDir() / (merge.key + ".sh")).string();
+    merge.after = {chunked.key};
+    merge.schedulerOptions = resourceOptions();
+    const std::string range =
+        std::to_string(entry.firstFrame) + ":" + std::to_string(entry.lastFrame);
+    FarmScriptWriter::write(
+        merge.script,
+        writer.script(merge,
+                      "post.json and the sub-grid bubbles of wedge " + entry.wedge.name +
+                          " after its chunks",
+                      {{"post", entry.folder, "--frames", range, "--threads", threads}}));
+    return {chunked, merge};
+}
+
+std::vector<FarmJob> FarmSubmitCommand::exportJobs(const FarmWedge& entry,
+                                                   const std::string& suffix,
+                                                   const std::vector<std::string>& after,
+                                                   const FarmLayout& layout) const {
+    const FarmScriptWriter writer(layout);
+    const std::string out = layout.exportDir(entry.wedge.name).string();
+    const std::string range =
+        std::to_string(entry.firstFrame) + ":" + std::to_string(entry.lastFrame);
+    FarmJob chunked = newJob("export-" + suffix, "export", entry.wedge.name);
+    chunked.script = (layout.jobsDir() / (chunked.key + ".sh")).string();
+    chunked.frameChunks = chunks(entry);
+    chunked.after = after;
+    chunked.schedulerOptions = resourceOptions();
+    FarmJob listing = newJob("export-listing-" + suffix, "export-listing", entry.wedge.name);
+    listing.script = (layout.jobsDir() / (listing.key + ".sh")).string();
+    listing.after = {chunked.key};
+    listing.schedulerOptions = {"--nodes=1", "--ntasks=1", "--cpus-per-task=1"};
+    std::vector<std::vector<std::string>> writes;
+    std::vector<std::vector<std::string>> lists;
+    for (const std::string& format : formats_) {
+        writes.push_back({"export", entry.folder, "--format", format, "--out", out, "--up", up_,
+                          "--frames", FarmScriptWriter::kFrames, "--no-listing", "--quiet"});
+        lists.push_back({"export", entry.folder, "--format", format, "--out", out, "--up", up_,
+                         "--frames", range, "--listing-only"});
+    }
+    FarmScriptWriter::write(chunked.script,
+                            writer.script(chunked,
+                                          joined(formats_, ", ") + " export of wedge " +
+                                              entry.wedge.name + ", one frame chunk per task",
+                                          writes));
+    // export.json lists every chunk's files: written once, by one job after them all.
+    FarmScriptWriter::write(
+        listing.script, writer.script(listing, "export.json of wedge " + entry.wedge.name, lists));
+    return {chunked, listing};
+}
+
+std::vector<FarmJob> FarmSubmitCommand::planJobs(const FarmWedge& entry, std::size_t index,
+                                                 const FarmLayout& layout) const {
+    const std::string suffix = std::to_string(index);
+    std::vector<FarmJob> jobs;
+    if (hasStage("bake"))
+        jobs.push_back(bakeJob(entry, suffix, layout));
+    if (hasStage("post")) {
+        const std::vector<std::string> after =
+            jobs.empty() ? std::vector<std::string>{} : std::vector{jobs.back().key};
+        for (FarmJob& job : postJobs(entry, suffix, after, layout))
+            jobs.push_back(std::move(job));
+    }
+    if (hasStage("export")) {
+        const std::vector<std::string> after =
+            jobs.empty() ? std::vector<std::string>{} : std::vector{jobs.back().key};
+        for (FarmJob& job : exportJobs(entry, suffix, after, layout))
+            jobs.push_back(std::move(job));
+    }
+    return jobs;
+}
+
+std::string FarmSubmitCommand::submitScript(const FarmListing& listing,
+                                            const FarmLayout& layout) const {
+    // A job's id lands in a shell variable named after its key ('-' is not allowed there).
+    const auto variable = [](std::string key) {
+        std::replace(key.begin(), key.end(), '-', '_');
+        return "id_" + key;
+    };
+    std::string text = "#!/bin/bash\n# The sbatch commands of this farm submission, in order "
+                       "(docs/FARM.md): every Slurm option\n# is here. Run it by hand to submit "
+                       "the same jobs again; each bake continues its cache.\nset -eu\n";
+    for (const FarmWedge& entry : listing.wedges) {
+        text += "\n# wedge " + entry.wedge.name + "\n";
+        for (const FarmJob& job : entry.jobs) {
+            std::string line = variable(job.key) + "=$(";
+            const std::vector<std::string> arguments = SlurmScheduler::submitArguments(
+                job, layout.logPattern(job.key, job.isArray()).string(), {}, extraOptions());
+            for (const std::string& argument : arguments) {
+                if (&argument != &arguments.front())
+                    line += ' ';
+                line += shellQuote(argument);
+                if (argument == "--parsable" && !job.after.empty()) {
+                    line += " --dependency=afterok";
+                    for (const std::string& key : job.after)
+                        line += ":\"$" + variable(key) + "\"";
+                }
+            }
+            text += line + ")\necho \"" + job.key + ": $" + variable(job.key) + "\"\n";
+        }
+    }
+    return text;
+}
+
+void FarmSubmitCommand::submitAll(FarmListing& listing, const FarmLayout& layout) const {
+    std::map<std::string, std::string> ids;
+    std::vector<std::string> submitted;
+    try {
+        for (FarmWedge& entry : listing.wedges)
+            for (FarmJob& job : entry.jobs) {
+                std::vector<std::string> dependencies;
+                for (const std::string& key : job.after)
+                    dependencies.push_back(ids.at(key));
+                job.id = SlurmScheduler::submit(SlurmScheduler::submitArguments(
+                    job, layout.logPattern(job.key, job.isArray()).string(), dependencies,
+                    extraOptions()));
+                ids[job.key] = job.id;
+                submitted.push_back(job.id);
+            }
+    } catch (const SchedulerError& error) {
+        // Nothing half-submitted: a chain missing a link would wait for ever, or run too soon.
+        try {
+            SlurmScheduler::cancel(submitted);
+        } catch (const SchedulerError&) {
+        }
+        throw SchedulerError(std::string(error.what()) +
+                             (submitted.empty()
+                                  ? "; nothing was submitted"
+                                  : "; cancelled the " + std::to_string(submitted.size()) +
+                                        " job(s) already queued"));
+    }
+}
+
+void FarmSubmitCommand::report(const FarmListing& listing, const FarmLayout& layout) const {
+    for (const FarmWedge& entry : listing.wedges) {
+        std::cout << "wedge " << entry.wedge.name << " → " << entry.folder << '\n';
+        for (const FarmJob& job : entry.jobs) {
+            std::cout << "  " << job.stage << ' ' << (dryRun_ ? "(not submitted)" : job.id);
+            if (job.isArray())
+                std::cout << " (" << job.frameChunks.size() << " tasks)";
+            std::cout << '\n';
+        }
+    }
+    if (dryRun_)
+        std::cout << "dry run: the sbatch commands are in " << layout.submitScript().string()
+                  << '\n';
+    else
+        std::cout << "follow with: airtrap-cli farm status " << shellQuote(layout.root.string())
+                  << '\n';
+}
+
+void FarmSubmitCommand::createFolders(const FarmLayout& layout) const {
+    std::error_code error;
+    // Records of an earlier submission would read as this one's.
+    fs::remove_all(layout.recordsDir(), error);
+    for (const fs::path& dir : {layout.jobsDir(), layout.logsDir(), layout.recordsDir()})
+        if (fs::create_directories(dir, error); error)
+            throw Error(ErrorKind::Io, AtomicFile::errorMessage("cannot create folder",
+                                                                dir.string(), error.value()));
+}
+
+ExitCode FarmSubmitCommand::run() {
+    checkOptions();
+    FarmListing listing = planWedges();
+    const FarmLayout layout{absolute(outDir_)};
+    if (!dryRun_)
+        SlurmScheduler::requireCommands();
+    prepareFolder(listing, layout);
+    createFolders(layout);
+    for (std::size_t i = 0; i < listing.wedges.size(); ++i)
+        listing.wedges[i].jobs = planJobs(listing.wedges[i], i, layout);
+    const std::string commands = submitScript(listing, layout);
+    FarmScriptWriter::write(layout.submitScript().string(), commands);
+    if (dryRun_)
+        std::cout << commands << '\n';
+    else
+        submitAll(listing, layout);
+    listing.write(layout.wedgesFile().string());
+    report(listing, layout);
+    return ExitCode::Success;
+}
+
+} // namespace airtrap::cli
