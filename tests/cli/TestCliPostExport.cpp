@@ -44,6 +44,27 @@ private Q_SLOTS:
         QCOMPARE(listing.at("frame_end").get<int>(), 4);
     }
 
+    void chunkedExportsLeaveTheListingToOneLastRun() {
+        bake(cache_);
+        const std::string out = path("chunks");
+        for (const char* frames : {"1:2", "3:4"})
+            QCOMPARE_EXIT(runCli(args({"export", cache_, "--format", "ply", "--out", out,
+                                       "--frames", frames, "--no-listing"})),
+                          0);
+        QVERIFY(fs::exists(out + "/particles_0004.ply"));
+        QVERIFY(!fs::exists(out + "/export.json"));
+        const CliResult listed = runCli(args({"export", cache_, "--format", "ply", "--out", out,
+                                              "--frames", "2:4", "--listing-only"}));
+        QCOMPARE_EXIT(listed, 0);
+        QVERIFY_CONTAINS(listed.out, "listed 3 file(s)");
+        const nlohmann::json listing = readJson(out + "/export.json");
+        QCOMPARE(listing.at("sequences").at("particles.ply").at("frames"),
+                 nlohmann::json({2, 3, 4}));
+        QCOMPARE_EXIT(runCli(args({"export", cache_, "--format", "ply", "--out", out,
+                                   "--no-listing", "--listing-only"})),
+                      1);
+    }
+
     void exportSkipsADamagedFrameAndExitsThree() {
         bake(cache_);
         writeBytes(cache_ + "/frame_0002.atf", {1, 2, 3});

@@ -50,14 +50,19 @@ job_ids() {
     json "$1/wedges.json" '",".join(j["id"] for w in d["wedges"] for j in w["jobs"])'
 }
 
-# Waits until no job of the submission in $1 is queued or running (at most $2 seconds).
+# The states of the jobs and array tasks $1 (comma-separated ids) that have not ended yet; Slurm
+# lists ended jobs for MinJobAge (300 s) after their end.
+unfinished() {
+    squeue -h -t all -j "$1" -o '%T %r' 2>/dev/null |
+        grep -vE '^(COMPLETED|FAILED|CANCELLED|TIMEOUT|OUT_OF_MEMORY|NODE_FAIL|BOOT_FAIL|DEADLINE) ' || true
+}
+
+# Waits until every job of the submission in $1 has ended (at most $2 seconds).
 wait_for_jobs() {
     local dir="$1" limit="$2" ids
     ids="$(job_ids "$dir")"
     for _ in $(seq $((limit * 2))); do
-        if [[ -z "$(squeue -h -j "$ids" -t PENDING,RUNNING,COMPLETING,CONFIGURING 2>/dev/null)" ]]; then
-            return 0
-        fi
+        [[ -z "$(unfinished "$ids")" ]] && return 0
         sleep 0.5
     done
     fail "jobs of $dir still queued after $limit s: $(squeue)"

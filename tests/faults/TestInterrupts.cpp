@@ -1,7 +1,7 @@
 // Ctrl-C (and SIGTERM, what a scheduler sends) during each stage, with one and two threads where
-// the stage has threads: exit 130 with the way on, a cache that checks intact, every finished
-// frame kept, and the same command run again finishing to what an undisturbed run gives
-// (docs/CLI.md "Exit codes").
+// the stage has threads: exit 130 (75 for a bake stopped by SIGUSR1) with the way on, a cache that
+// checks intact, every finished frame kept, and the same command run again finishing to what an
+// undisturbed run gives (docs/CLI.md "Exit codes").
 #include "faults/FaultTestSupport.h"
 #include "support/TestMain.h"
 
@@ -59,6 +59,8 @@ private Q_SLOTS:
         QTest::newRow("Ctrl-C, 1 thread") << 1 << SIGINT;
         QTest::newRow("Ctrl-C, 2 threads") << 2 << SIGINT;
         QTest::newRow("SIGTERM, 2 threads") << 2 << SIGTERM;
+        // A scheduler's warning before a time limit or a preemption (docs/FARM.md): exit 75.
+        QTest::newRow("SIGUSR1, 2 threads") << 2 << SIGUSR1;
     }
 
     void aStoppedBakeKeepsItsFramesAndResumes() {
@@ -68,7 +70,7 @@ private Q_SLOTS:
             {"bake", scene_, "--out", cache(), "--resume", "--threads", std::to_string(threads)});
         const StoppedRun run = signalAtMark(bake, "frame 3/", signal);
         QVERIFY2(run.stoppedEarly, run.err.constData());
-        QVERIFY2(run.exitCode == 130, run.err.constData());
+        QVERIFY2(run.exitCode == (signal == SIGUSR1 ? 75 : 130), run.err.constData());
         QVERIFY2(run.err.contains("resume with: airtrap-cli bake"), run.err.constData());
         QCOMPARE(readJson(cache() + "/manifest.json").at("status").get<std::string>(),
                  std::string("stopped"));

@@ -1,6 +1,7 @@
 // The post stage's store beside a cache: meshes round-trip exactly (to float), a damaged mesh
 // file is refused by name, results are current only for the cache frame they were made from,
-// other settings make every result stale, and a reopened store lists what was written.
+// other settings make every result stale, a reopened store lists what was written, and runs
+// over other frames at once keep part lists that the next whole run merges.
 #include "core/AtomicFile.h"
 #include "core/Error.h"
 #include "post/MeshFile.h"
@@ -10,6 +11,7 @@
 
 #include <QTemporaryDir>
 #include <QtTest>
+#include <filesystem>
 
 using namespace airtrap;
 
@@ -98,6 +100,53 @@ private Q_SLOTS:
         store.useSettings({{"surface_mesh", {{"smoothing", 8}}}});
         QVERIFY(store.frames().empty());
         QVERIFY(PostStore::open(dir).frames().empty()); // and so says post.json
+    }
+
+    void partRunsListApartAndAreMergedByTheNextWholeRun() {
+        QTemporaryDir cache;
+        const std::string dir = cache.path().toStdString();
+        const nlohmann::json settings = {{"surface_mesh", {{"smoothing", 4}}}};
+        const WaterVolume none = WaterVolume::build(ParticleSet(), 0.02, {});
+        {
+            PostStore whole = PostStore::open(dir);
+            whole.useSettings(settings);
+            whole.writeFrame({1, 0x11u, 0, 0.1}, TriangleMesh(), none);
+        }
+        std::string damage;
+        // Two part runs at once, each over its frames; neither touches post.json.
+        PostStore first = PostStore::openPart(dir, "chunk-0", damage);
+        PostStore second = PostStore::openPart(dir, "chunk-1", damage);
+        for (PostStore* part : {&first, &second})
+            part->useSettings(settings);
+        first.writeFrame({2, 0x22u, 0, 0.1}, TriangleMesh(), none);
+        second.writeFrame({3, 0x33u, 0, 0.1}, TriangleMesh(), none);
+        second.writeFrame({4, 0x44u, 0, 0.1}, TriangleMesh(), none);
+        QCOMPARE(first.frames(), (std::vector<int>{1, 2})); // post.json's, then its own
+        QCOMPARE(PostStore::open(dir).frames(), (std::vector<int>{1}));
+        // A part whose result file was damaged since lists nothing for it: made again.
+        const std::string volume = dir + "/post/fluid_0004.vdb";
+        std::vector<std::uint8_t> bytes = AtomicFile::read(volume);
+        bytes.at(bytes.size() / 2) ^= 0x20;
+        AtomicFile::write(volume, bytes);
+
+        PostStore whole = PostStore::open(dir);
+        whole.useSettings(settings);
+        std::vector<std::string> unreadable;
+        QCOMPARE(whole.mergeParts(unreadable), 2);
+        QVERIFY(unreadable.empty());
+        QCOMPARE(whole.frames(), (std::vector<int>{1, 2, 3}));
+        QVERIFY(whole.isCurrent(3, 0x33u));
+        QCOMPARE(PostStore::open(dir).frames(), (std::vector<int>{1, 2, 3}));
+        QVERIFY(!std::filesystem::exists(dir + "/post/parts"));
+        QCOMPARE(whole.mergeParts(unreadable), 0);
+    }
+
+    void aPartNameMustBeAPlainFileName() {
+        QTemporaryDir cache;
+        std::string damage;
+        for (const char* bad : {"", "../x", "a b", "$(touch pwned)"})
+            QVERIFY_THROWS_EXCEPTION(Error,
+                                     PostStore::openPart(cache.path().toStdString(), bad, damage));
     }
 };
 

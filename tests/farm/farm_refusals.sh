@@ -1,0 +1,88 @@
+#!/usr/bin/env bash
+# What farm submit refuses, and what a failure looks like, on a real one-node Slurm: a wedge that
+# does not validate or a broken wedge file (refused before anything is written, naming the key and
+# value), an output folder holding another submission (unless --overwrite), no sbatch on the PATH,
+# a controller that does not answer, sbatch refusing a job halfway (the jobs already queued are
+# cancelled), and a task that fails (farm status shows it with its log tail; farm cancel ends the
+# jobs left waiting for it).
+source "$(dirname "$0")/farm_support.sh"
+
+write_scene scene.json 12 0.04
+
+expect_exit() {
+    local expected="$1" name="$2"
+    shift 2
+    local status=0
+    "$@" >"$name.out" 2>"$name.err" || status=$?
+    [[ $status -eq $expected ]] || fail "$name: exit $status, expected $expected: $(cat "$name.err")"
+}
+
+expect_exit 2 bad-wedge "$cli" farm submit scene.json --out bad --dry-run \
+    --wedge solver.viscosity_alpha=0.1 --wedge solver.viscosity_alpha=7
+grep -q 'solver.viscosity_alpha=7' bad-wedge.err && grep -q 'expected a number in \[0, 1\]' bad-wedge.err ||
+    fail "bad-wedge: the message names neither key, value nor range: $(cat bad-wedge.err)"
+[[ ! -e bad ]] || fail "bad-wedge: the refused submission wrote $(ls bad)"
+
+echo '{"solver.viscosity_alpha": 0.1}' >wedges.json
+expect_exit 2 bad-file "$cli" farm submit scene.json --out bad --dry-run --wedge-file wedges.json
+grep -q 'wedges.json: "solver.viscosity_alpha": expected an array' bad-file.err ||
+    fail "bad-file: $(cat bad-file.err)"
+
+expect_exit 0 first "$cli" farm submit scene.json --out taken --dry-run --wedge solver.viscosity_alpha=0.1
+expect_exit 2 other "$cli" farm submit scene.json --out taken --dry-run --wedge solver.viscosity_alpha=0.2
+grep -q -- '--overwrite' other.err || fail "other: $(cat other.err)"
+expect_exit 0 overwrite "$cli" farm submit scene.json --out taken --dry-run --overwrite \
+    --wedge solver.viscosity_alpha=0.2
+[[ "$(json taken/wedges.json 'd["wedges"][0]["values"]')" == "['0.2']" ]] ||
+    fail "overwrite: wedges.json is not the new submission's"
+
+expect_exit 7 no-sbatch env PATH=/nonexistent "$cli" farm submit scene.json --out nosbatch
+grep -q 'sbatch is not on the PATH' no-sbatch.err || fail "no-sbatch: $(cat no-sbatch.err)"
+[[ "$(wc -l <no-sbatch.err)" -eq 1 ]] || fail "no-sbatch: more than one line: $(cat no-sbatch.err)"
+echo "refused: an out-of-range wedge, a wedge file without arrays, a taken folder, no sbatch"
+
+start_cluster
+
+sed 's/^SlurmctldPort=.*/SlurmctldPort=1/' "$SLURM_CONF" >dead.conf
+expect_exit 7 dead env SLURM_CONF="$work/dead.conf" "$cli" farm submit scene.json --out dead
+grep -q 'Unable to contact slurm controller' dead.err || fail "dead: $(cat dead.err)"
+
+# An sbatch that refuses the third job: the two queued before it are cancelled.
+mkdir -p fake
+cat >fake/sbatch <<FAKE
+#!/bin/bash
+count=\$(( \$(cat "$work/fake/count" 2>/dev/null || echo 0) + 1 ))
+echo \$count >"$work/fake/count"
+if [[ \$count -eq 3 ]]; then
+    echo "sbatch: error: Batch job submission failed: refused by the test" >&2
+    exit 1
+fi
+exec $(command -v sbatch) "\$@"
+FAKE
+chmod +x fake/sbatch
+expect_exit 7 halfway env PATH="$work/fake:$PATH" "$cli" farm submit scene.json --out halfway
+grep -q 'refused by the test; cancelled the 2 job(s) already queued' halfway.err ||
+    fail "halfway: $(cat halfway.err)"
+sleep 1
+[[ -z "$(squeue -h -t PENDING,RUNNING 2>/dev/null)" ]] || fail "halfway: jobs left queued: $(squeue)"
+echo "refused: a controller that does not answer; a submission sbatch refused halfway was cancelled"
+
+# Export without post: every OBJ export task fails (post has made no frame).
+"$cli" farm submit scene.json --out failing --threads 1 --chunk 4 --stages bake,export \
+    --export obj >/dev/null || fail "submit failing"
+for _ in $(seq 120); do
+    [[ "$(squeue -h -t RUNNING,PENDING -o '%T %r' | grep -vc DependencyNeverSatisfied)" == 0 ]] && break
+    sleep 0.5
+done
+"$cli" farm status failing --lines 3 | tee status.txt
+grep -q 'export [0-9]*: 3 FAILED' status.txt || fail "status does not show 3 failed export tasks"
+grep -q '| airtrap-cli: .*post' status.txt || fail "status shows no log tail naming post"
+"$cli" farm status failing --json >status.json
+[[ "$(json status.json 'd["wedges"][0]["jobs"][1]["tasks"][0]["exit"]')" == 2 ]] ||
+    fail "status --json gives no exit 2 for the failed task"
+[[ "$(json status.json 'd["wedges"][0]["jobs"][2]["reason"]')" == DependencyNeverSatisfied ]] ||
+    fail "the listing job is not shown waiting for ever"
+"$cli" farm cancel failing | grep -q 'cancelled' || fail "cancel said nothing"
+sleep 1
+[[ -z "$(squeue -h -t PENDING,RUNNING 2>/dev/null)" ]] || fail "cancel left jobs: $(squeue)"
+echo "a failed task shows in farm status with its log tail; farm cancel ends what waits on it"
