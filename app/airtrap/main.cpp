@@ -1,6 +1,7 @@
 // airtrap: the editor. `airtrap [scene.json]` opens the window; with --screenshot it renders one
 // frame to a PNG and exits (for the docs and for pixel tests).
 #include "viewport/ViewportWidget.h"
+#include "window/ContactSheet.h"
 #include "window/EditorSettings.h"
 #include "window/MainWindow.h"
 #include "window/ScreenshotJob.h"
@@ -21,6 +22,8 @@ struct EditorOptions {
     QString scenePath;
     airtrap::ScreenshotRequest screenshot;
     bool takeScreenshot = false;
+    QString contactSheetPath; //!< --contact-sheet: tile the renders of --tiles into this PNG
+    QString tilesPath;
 };
 
 //! Bad command-line input: the reason on stderr and exit code 2, like airtrap-cli.
@@ -137,11 +140,25 @@ EditorOptions parseOptions(const QApplication& app) {
     const QCommandLineOption noSelection(
         QStringLiteral("no-selection"),
         QStringLiteral("Draw no selection (screenshots never draw one; accepted for scripts)."));
+    const QCommandLineOption contactSheet(
+        QStringLiteral("contact-sheet"),
+        QStringLiteral("Tile the renders listed by --tiles, labelled, into this PNG and exit "
+                       "(farm wedges, docs/FARM.md)."),
+        QStringLiteral("out.png"));
+    const QCommandLineOption tiles(
+        QStringLiteral("tiles"),
+        QStringLiteral("For --contact-sheet: a file with one render per line, its path, a tab "
+                       "and its label."),
+        QStringLiteral("list.tsv"));
     parser.addOptions({scene, cache, frame, screenshot, size, window, show, camera, surface,
-                       particleSize, noSelection});
+                       particleSize, noSelection, contactSheet, tiles});
     parser.process(app);
-
     EditorOptions options;
+    options.contactSheetPath = parser.value(contactSheet);
+    options.tilesPath = parser.value(tiles);
+    if (parser.isSet(contactSheet) != parser.isSet(tiles))
+        refuse(QStringLiteral("--contact-sheet and --tiles go together"));
+
     options.scenePath =
         parser.isSet(scene) ? parser.value(scene) : parser.positionalArguments().value(0);
     options.takeScreenshot = parser.isSet(screenshot);
@@ -190,6 +207,26 @@ int takeScreenshot(airtrap::MainWindow& window, const airtrap::ScreenshotRequest
     return QApplication::exec() == 0 ? exitCode : 1;
 }
 
+//! --contact-sheet: no window, no OpenGL; the tiles at the size of --size (default 640x360).
+int makeContactSheet(const EditorOptions& options) {
+    QString error;
+    const std::vector<airtrap::ContactSheet::Tile> tiles =
+        airtrap::ContactSheet::readTiles(options.tilesPath, error);
+    if (!error.isEmpty())
+        refuse(error);
+    const QSize tileSize =
+        options.screenshot.size.isValid() ? options.screenshot.size : QSize(640, 360);
+    error = airtrap::ContactSheet::save(airtrap::ContactSheet::compose(tiles, tileSize),
+                                        options.contactSheetPath);
+    if (!error.isEmpty()) {
+        std::fprintf(stderr, "airtrap: cannot write the contact sheet: %s\n", qPrintable(error));
+        return 4;
+    }
+    std::printf("contact sheet of %zu render(s): %s\n", tiles.size(),
+                qPrintable(options.contactSheetPath));
+    return 0;
+}
+
 } // namespace
 
 int main(int argc, char* argv[]) {
@@ -207,8 +244,10 @@ int main(int argc, char* argv[]) {
     QApplication::setApplicationVersion(QStringLiteral(AIRTRAP_VERSION));
     const EditorOptions options = parseOptions(app);
     // A screenshot neither reads nor writes the user's settings (view options, recent files).
-    if (options.takeScreenshot)
+    if (options.takeScreenshot || !options.contactSheetPath.isEmpty())
         airtrap::EditorSettings::useScratchStore();
+    if (!options.contactSheetPath.isEmpty())
+        return makeContactSheet(options);
 
     airtrap::MainWindow window;
     if (options.takeScreenshot)

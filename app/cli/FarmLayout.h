@@ -17,6 +17,11 @@ struct FarmLayout {
     std::filesystem::path recordsDir() const { return farmDir() / "records"; }
     std::filesystem::path submitScript() const { return farmDir() / "submit.sh"; }
     std::filesystem::path wedgeDir(const std::string& wedge) const { return root / wedge; }
+    std::filesystem::path contactSheet() const { return root / "contact_sheet.png"; }
+    std::filesystem::path sheetTiles() const { return farmDir() / "contact_sheet.tsv"; }
+    std::filesystem::path sheetRender(const std::string& wedge) const {
+        return farmDir() / "sheet" / (wedge + ".png");
+    }
     std::filesystem::path exportDir(const std::string& wedge) const {
         return wedgeDir(wedge) / "export";
     }

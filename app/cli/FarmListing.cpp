@@ -20,6 +20,7 @@ FarmJob jobFrom(const nlohmann::json& json, const std::string& wedge) {
     job.script = json.at("script").get<std::string>();
     job.after = json.at("after").get<std::vector<std::string>>();
     job.frameChunks = json.at("frame_chunks").get<std::vector<std::string>>();
+    job.afterAny = json.value("after_any", false);
     job.wedge = wedge;
     return job;
 }
@@ -80,6 +81,8 @@ FarmListing FarmListing::read(const std::string& path) {
         listing.overrides = json.at("overrides").get<std::vector<std::string>>();
         for (const nlohmann::json& wedge : json.at("wedges"))
             listing.wedges.push_back(wedgeFrom(wedge));
+        for (const nlohmann::json& job : json.value("final_jobs", nlohmann::json::array()))
+            listing.finalJobs.push_back(jobFrom(job, ""));
     } catch (const nlohmann::json::exception& error) {
         throw Error(ErrorKind::InvalidInput, path + ": " + error.what());
     }
@@ -110,6 +113,9 @@ std::vector<std::string> FarmListing::jobIds() const {
         for (const FarmJob& job : entry.jobs)
             if (!job.id.empty())
                 ids.push_back(job.id);
+    for (const FarmJob& job : finalJobs)
+        if (!job.id.empty())
+            ids.push_back(job.id);
     return ids;
 }
 

@@ -26,6 +26,8 @@ struct FarmListing {
     std::string scene;                  //!< absolute path
     std::vector<std::string> overrides; //!< `--set` for every wedge
     std::vector<FarmWedge> wedges;
+    //! Jobs over every wedge, after all of theirs (the contact sheet).
+    std::vector<FarmJob> finalJobs;
 
     nlohmann::json toJson() const;
     //! Error(InvalidInput) naming `path` when it is not a farm listing this build reads.

@@ -107,6 +107,36 @@ std::string FarmScriptWriter::script(const FarmJob& job, const std::string& desc
     return text;
 }
 
+std::string FarmScriptWriter::contactSheetScript(const FarmJob& job, const std::string& editor,
+                                                 int frame, const std::vector<SheetRender>& renders,
+                                                 const std::string& tiles,
+                                                 const std::string& sheet) const {
+    std::string text =
+        header(job, "contact sheet of frame " + std::to_string(frame) + " of every wedge") +
+        chunkSelection(job) + "started=$(date +%s.%N)\n" + kRunner;
+    text += "\neditor=" + shellQuote(editor) + "\n";
+    text += R"SH(
+# The editor draws with OpenGL: on a node without a display, Xvfb gives it one (Mesa renders in
+# software there).
+render() {
+    if [ -n "${DISPLAY:-}" ]; then
+        "$editor" "$@"
+    else
+        xvfb-run -a -s "-screen 0 1280x1024x24" "$editor" "$@"
+    fi
+}
+
+)SH";
+    for (const SheetRender& render : renders)
+        text += "render --cache " + shellQuote(render.cache) + " --frame " + std::to_string(frame) +
+                " --size 640x360 --screenshot " + shellQuote(render.picture) +
+                " || echo \"no render of " + std::to_string(frame) +
+                " in that wedge; its tile says so\"\n";
+    text += "QT_QPA_PLATFORM=offscreen \"$editor\" --contact-sheet " + shellQuote(sheet) +
+            " --tiles " + shellQuote(tiles) + " --size 640x360\nfinish \"$?\"\n";
+    return text;
+}
+
 void FarmScriptWriter::write(const std::string& path, const std::string& text) {
     AtomicFile::write(path, text);
     std::filesystem::permissions(path,

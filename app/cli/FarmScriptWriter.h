@@ -24,6 +24,18 @@ public:
     std::string script(const FarmJob& job, const std::string& description,
                        const std::vector<std::vector<std::string>>& commands) const;
 
+    //! One render of a contact sheet: a wedge's cache and the picture of it.
+    struct SheetRender {
+        std::string cache;
+        std::string picture;
+    };
+    //! The contact sheet's script: the editor (`editor`) renders `frame` of each cache through
+    //! Xvfb where the node has no display, then tiles the pictures listed in `tiles` into
+    //! `sheet`. A wedge without the frame leaves a grey tile; the sheet is made regardless.
+    std::string contactSheetScript(const FarmJob& job, const std::string& editor, int frame,
+                                   const std::vector<SheetRender>& renders,
+                                   const std::string& tiles, const std::string& sheet) const;
+
     //! Writes `text` to `path` atomically, executable.
     static void write(const std::string& path, const std::string& text);
 

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 
 namespace fs = std::filesystem;
 
@@ -102,9 +103,10 @@ nlohmann::json FarmStatusCommand::taskState(const FarmJob& job, int task, const 
         return with(state, {{"state", pending->state}, {"reason", pending->reason}});
     if (!record.empty()) {
         const int exit = std::atoi(record.count("exit") ? record.at("exit").c_str() : "-1");
-        state.update({{"state", exit == 0    ? "COMPLETED"
-                                : exit == 75 ? "STOPPED"
-                                             : "FAILED"},
+        state.update({{"state", exit == 0     ? "COMPLETED"
+                                : exit == 75  ? "PREEMPTED"
+                                : exit == 130 ? "CANCELLED"
+                                              : "FAILED"},
                       {"exit", exit},
                       {"host", record.count("host") ? record.at("host") : ""},
                       {"started", record.count("started") ? record.at("started") : ""},
@@ -150,39 +152,47 @@ nlohmann::json FarmStatusCommand::wedgeState(const FarmWedge& entry, const Sourc
             {"jobs", jobs}};
 }
 
+void FarmStatusCommand::printJobs(const nlohmann::json& jobs) const {
+    std::vector<nlohmann::json> failed;
+    for (const nlohmann::json& job : jobs) {
+        const std::vector<nlohmann::json> tasks =
+            job.contains("tasks") ? job["tasks"].get<std::vector<nlohmann::json>>()
+                                  : std::vector<nlohmann::json>{job};
+        std::map<std::string, int> counts;
+        for (const nlohmann::json& task : tasks) {
+            ++counts[task["state"].get<std::string>()];
+            if (task.contains("log_tail"))
+                failed.push_back(task);
+        }
+        std::cout << "  " << job["stage"].get<std::string>() << ' ' << job["id"].get<std::string>()
+                  << ':';
+        for (const auto& [state, count] : counts)
+            std::cout << ' ' << (tasks.size() > 1 ? std::to_string(count) + " " : "") << state;
+        if (tasks.size() == 1 && tasks.front().contains("reason") &&
+            tasks.front()["reason"] != "None")
+            std::cout << " (" << tasks.front()["reason"].get<std::string>() << ')';
+        std::cout << '\n';
+    }
+    for (const nlohmann::json& task : failed) {
+        std::cout << "  job " << task["id"].get<std::string>() << " ended with exit "
+                  << task["exit"].get<int>() << "; " << task["log"].get<std::string>()
+                  << " ends:\n";
+        std::istringstream lines(task["log_tail"].get<std::string>());
+        for (std::string line; std::getline(lines, line);)
+            std::cout << "    | " << line << '\n';
+    }
+}
+
 void FarmStatusCommand::print(const nlohmann::json& status) const {
     for (const nlohmann::json& wedge : status["wedges"]) {
         std::cout << "wedge " << wedge["name"].get<std::string>() << ": "
                   << wedge["frames_cached"].get<int>() << " of " << wedge["frames"].get<int>()
                   << " frame(s) cached in " << wedge["folder"].get<std::string>() << '\n';
-        std::vector<nlohmann::json> failed;
-        for (const nlohmann::json& job : wedge["jobs"]) {
-            const std::vector<nlohmann::json> tasks =
-                job.contains("tasks") ? job["tasks"].get<std::vector<nlohmann::json>>()
-                                      : std::vector<nlohmann::json>{job};
-            std::map<std::string, int> counts;
-            for (const nlohmann::json& task : tasks) {
-                ++counts[task["state"].get<std::string>()];
-                if (task.contains("log_tail"))
-                    failed.push_back(task);
-            }
-            std::cout << "  " << job["stage"].get<std::string>() << ' '
-                      << job["id"].get<std::string>() << ':';
-            for (const auto& [state, count] : counts)
-                std::cout << ' ' << (tasks.size() > 1 ? std::to_string(count) + " " : "") << state;
-            if (tasks.size() == 1 && tasks.front().contains("reason") &&
-                tasks.front()["reason"] != "None")
-                std::cout << " (" << tasks.front()["reason"].get<std::string>() << ')';
-            std::cout << '\n';
-        }
-        for (const nlohmann::json& task : failed) {
-            std::cout << "  job " << task["id"].get<std::string>() << " ended with exit "
-                      << task["exit"].get<int>() << "; " << task["log"].get<std::string>()
-                      << " ends:\n";
-            std::istringstream lines(task["log_tail"].get<std::string>());
-            for (std::string line; std::getline(lines, line);)
-                std::cout << "    | " << line << '\n';
-        }
+        printJobs(wedge["jobs"]);
+    }
+    if (!status["final_jobs"].empty()) {
+        std::cout << "after every wedge:\n";
+        printJobs(status["final_jobs"]);
     }
 }
 
@@ -204,6 +214,9 @@ ExitCode FarmStatusCommand::run() {
     nlohmann::json status = {{"folder", layout.root.string()}, {"wedges", nlohmann::json::array()}};
     for (const FarmWedge& entry : listing.wedges)
         status["wedges"].push_back(wedgeState(entry, sources, layout));
+    status["final_jobs"] = nlohmann::json::array();
+    for (const FarmJob& job : listing.finalJobs)
+        status["final_jobs"].push_back(jobState(job, sources, layout));
     if (json_)
         std::cout << status.dump(2) << '\n';
     else

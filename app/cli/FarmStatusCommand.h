@@ -32,6 +32,8 @@ private:
     nlohmann::json wedgeState(const FarmWedge& entry, const Sources& sources,
                               const FarmLayout& layout) const;
     void print(const nlohmann::json& status) const;
+    //! One line per job (array tasks counted by state), then the log tail of each failed task.
+    void printJobs(const nlohmann::json& jobs) const;
     //! The last `lines_` lines of `path`, or "" when it cannot be read.
     std::string tail(const std::string& path) const;
 

@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <unistd.h>
 
 namespace fs = std::filesystem;
 
@@ -92,6 +93,13 @@ void FarmSubmitCommand::addTo(CLI::App& parent) {
     app_->add_option("--signal", signal_,
                      "Warning signal before the time limit, sbatch's --signal syntax (default "
                      "B:USR1@120)");
+    app_->add_option("--contact-sheet", contactSheetFrame_,
+                     "After every wedge, render this frame of each with the editor and tile the "
+                     "pictures, labelled by their values, into DIR/contact_sheet.png")
+        ->check(CLI::Range(1, 1000000));
+    app_->add_option("--editor", editor_,
+                     "The editor on the nodes, for --contact-sheet (default: airtrap beside "
+                     "airtrap-cli)");
     app_->add_flag("--dry-run", dryRun_,
                    "Write the job scripts and print the sbatch commands; "
                    "submit nothing");
@@ -114,6 +122,8 @@ void FarmSubmitCommand::checkOptions() const {
                         "--export " + format + ": expected obj, vdb or ply");
     for (const std::string& option : sbatch_)
         sbatchOption(option);
+    if (contactSheetFrame_ > 0)
+        editorPath();
     if (signal_.empty() || signal_.find_first_of(" \t\n'\"") != std::string::npos)
         throw Error(ErrorKind::InvalidInput,
                     "--signal " + signal_ + ": expected sbatch's syntax, e.g. B:USR1@120");
@@ -124,7 +134,9 @@ FarmListing FarmSubmitCommand::planWedges() const {
     if (!wedgeFile_.empty())
         plan.addFile(wedgeFile_);
     plan.addAssignments(wedges_);
-    FarmListing listing{.scene = absolute(scenePath_), .overrides = overrides_, .wedges = {}};
+    FarmListing listing;
+    listing.scene = absolute(scenePath_);
+    listing.overrides = overrides_;
     const FarmLayout layout{absolute(outDir_)};
     for (const Wedge& wedge : plan.wedges()) {
         std::vector<std::string> assignments = overrides_;
@@ -322,25 +334,32 @@ std::string FarmSubmitCommand::submitScript(const FarmListing& listing,
     std::string text = "#!/bin/bash\n# The sbatch commands of this farm submission, in order "
                        "(docs/FARM.md): every Slurm option\n# is here. Run it by hand to submit "
                        "the same jobs again; each bake continues its cache.\nset -eu\n";
+    const auto lineOf = [&](const FarmJob& job) {
+        std::string line = variable(job.key) + "=$(";
+        const std::vector<std::string> arguments = SlurmScheduler::submitArguments(
+            job, layout.logPattern(job.key, job.isArray()).string(), {}, extraOptions());
+        for (const std::string& argument : arguments) {
+            if (&argument != &arguments.front())
+                line += ' ';
+            line += shellQuote(argument);
+            if (argument == "--parsable" && !job.after.empty()) {
+                line += job.afterAny ? " --dependency=afterany" : " --dependency=afterok";
+                for (const std::string& key : job.after)
+                    line += ":\"$" + variable(key) + "\"";
+                line += " --kill-on-invalid-dep=yes";
+            }
+        }
+        return line + ")\necho \"" + job.key + ": $" + variable(job.key) + "\"\n";
+    };
     for (const FarmWedge& entry : listing.wedges) {
         text += "\n# wedge " + entry.wedge.name + "\n";
-        for (const FarmJob& job : entry.jobs) {
-            std::string line = variable(job.key) + "=$(";
-            const std::vector<std::string> arguments = SlurmScheduler::submitArguments(
-                job, layout.logPattern(job.key, job.isArray()).string(), {}, extraOptions());
-            for (const std::string& argument : arguments) {
-                if (&argument != &arguments.front())
-                    line += ' ';
-                line += shellQuote(argument);
-                if (argument == "--parsable" && !job.after.empty()) {
-                    line += " --dependency=afterok";
-                    for (const std::string& key : job.after)
-                        line += ":\"$" + variable(key) + "\"";
-                }
-            }
-            text += line + ")\necho \"" + job.key + ": $" + variable(job.key) + "\"\n";
-        }
+        for (const FarmJob& job : entry.jobs)
+            text += lineOf(job);
     }
+    if (!listing.finalJobs.empty())
+        text += "\n# after every wedge\n";
+    for (const FarmJob& job : listing.finalJobs)
+        text += lineOf(job);
     return text;
 }
 
@@ -348,17 +367,21 @@ void FarmSubmitCommand::submitAll(FarmListing& listing, const FarmLayout& layout
     std::map<std::string, std::string> ids;
     std::vector<std::string> submitted;
     try {
+        const auto submit = [&](FarmJob& job) {
+            std::vector<std::string> dependencies;
+            for (const std::string& key : job.after)
+                dependencies.push_back(ids.at(key));
+            job.id = SlurmScheduler::submit(SlurmScheduler::submitArguments(
+                job, layout.logPattern(job.key, job.isArray()).string(), dependencies,
+                extraOptions()));
+            ids[job.key] = job.id;
+            submitted.push_back(job.id);
+        };
         for (FarmWedge& entry : listing.wedges)
-            for (FarmJob& job : entry.jobs) {
-                std::vector<std::string> dependencies;
-                for (const std::string& key : job.after)
-                    dependencies.push_back(ids.at(key));
-                job.id = SlurmScheduler::submit(SlurmScheduler::submitArguments(
-                    job, layout.logPattern(job.key, job.isArray()).string(), dependencies,
-                    extraOptions()));
-                ids[job.key] = job.id;
-                submitted.push_back(job.id);
-            }
+            for (FarmJob& job : entry.jobs)
+                submit(job);
+        for (FarmJob& job : listing.finalJobs)
+            submit(job);
     } catch (const SchedulerError& error) {
         // Nothing half-submitted: a chain missing a link would wait for ever, or run too soon.
         try {
@@ -383,6 +406,9 @@ void FarmSubmitCommand::report(const FarmListing& listing, const FarmLayout& lay
             std::cout << '\n';
         }
     }
+    for (const FarmJob& job : listing.finalJobs)
+        std::cout << job.stage << ' ' << (dryRun_ ? "(not submitted)" : job.id) << " → "
+                  << layout.contactSheet().string() << '\n';
     if (dryRun_)
         std::cout << "dry run: the sbatch commands are in " << layout.submitScript().string()
                   << '\n';
@@ -401,6 +427,49 @@ void FarmSubmitCommand::createFolders(const FarmLayout& layout) const {
                                                                 dir.string(), error.value()));
 }
 
+std::string FarmSubmitCommand::editorPath() const {
+    const fs::path editor = editor_.empty()
+                                ? fs::canonical("/proc/self/exe").parent_path() / "airtrap"
+                                : fs::path(editor_);
+    std::error_code error;
+    if (!fs::is_regular_file(editor, error) || ::access(editor.c_str(), X_OK) != 0)
+        throw Error(ErrorKind::InvalidInput,
+                    "--contact-sheet renders with the editor, but " + editor.string() +
+                        " is not an executable file; give its path on the nodes with --editor");
+    return absolute(editor.string());
+}
+
+FarmJob FarmSubmitCommand::contactSheetJob(const FarmListing& listing,
+                                           const FarmLayout& layout) const {
+    FarmJob job = newJob("contact-sheet", "contact-sheet", "");
+    job.script = (layout.jobsDir() / "contact-sheet.sh").string();
+    job.afterAny = true;
+    job.schedulerOptions = {"--nodes=1", "--ntasks=1", "--cpus-per-task=1"};
+    std::vector<FarmScriptWriter::SheetRender> renders;
+    std::string tiles;
+    for (const FarmWedge& entry : listing.wedges) {
+        for (const FarmJob& other : entry.jobs)
+            job.after.push_back(other.key);
+        const std::string picture = layout.sheetRender(entry.wedge.name).string();
+        renders.push_back({entry.folder, picture});
+        std::string label;
+        for (std::size_t i = 0; i < entry.wedge.keys.size(); ++i)
+            label += (i == 0 ? "" : "   ") + entry.wedge.keys[i] + " = " + entry.wedge.values[i];
+        // One line per tile: a tab or a newline in a value would start another field or tile.
+        std::replace_if(
+            label.begin(), label.end(), [](char c) { return c == '\t' || c == '\n' || c == '\r'; },
+            ' ');
+        tiles += picture + "\t" + (label.empty() ? entry.wedge.name : label) + "\n";
+    }
+    fs::create_directories(layout.sheetRender("x").parent_path());
+    AtomicFile::write(layout.sheetTiles().string(), tiles);
+    FarmScriptWriter::write(job.script,
+                            FarmScriptWriter(layout).contactSheetScript(
+                                job, editorPath(), contactSheetFrame_, renders,
+                                layout.sheetTiles().string(), layout.contactSheet().string()));
+    return job;
+}
+
 ExitCode FarmSubmitCommand::run() {
     checkOptions();
     FarmListing listing = planWedges();
@@ -411,6 +480,8 @@ ExitCode FarmSubmitCommand::run() {
     createFolders(layout);
     for (std::size_t i = 0; i < listing.wedges.size(); ++i)
         listing.wedges[i].jobs = planJobs(listing.wedges[i], i, layout);
+    if (contactSheetFrame_ > 0)
+        listing.finalJobs.push_back(contactSheetJob(listing, layout));
     const std::string commands = submitScript(listing, layout);
     FarmScriptWriter::write(layout.submitScript().string(), commands);
     if (dryRun_)

@@ -1,7 +1,8 @@
 #pragma once
 // `airtrap-cli farm submit SCENE --out DIR [--wedge key=VALUE ...] [--wedge-file F.json]
 // [--stages bake,post,export] [--export obj,vdb,ply] [--chunk N] [--frames A:B] [--threads N]
-// [--sbatch key=value ...] [--signal SIG] [--dry-run] [--overwrite]`: validates every wedge,
+// [--sbatch key=value ...] [--signal SIG] [--contact-sheet FRAME [--editor PATH]] [--dry-run]
+// [--overwrite]`: validates every wedge,
 // writes the job scripts under DIR/farm, submits them chained by afterok and records them in
 // DIR/wedges.json (docs/FARM.md).
 #include "Command.h"
@@ -38,6 +39,11 @@ private:
     std::vector<FarmJob> exportJobs(const FarmWedge& entry, const std::string& suffix,
                                     const std::vector<std::string>& after,
                                     const FarmLayout& layout) const;
+    //! The job after every other that renders frame --contact-sheet of each wedge into
+    //! DIR/contact_sheet.png; its tile list is written beside the scripts.
+    FarmJob contactSheetJob(const FarmListing& listing, const FarmLayout& layout) const;
+    //! The editor that renders the contact sheet: --editor, or `airtrap` beside airtrap-cli.
+    std::string editorPath() const;
     //! The sbatch command lines of every job, in submission order; farm/submit.sh holds them.
     std::string submitScript(const FarmListing& listing, const FarmLayout& layout) const;
     //! Submits in order, each with afterok on the ids of the jobs it waits for. When one is
@@ -65,6 +71,8 @@ private:
     std::string signal_ = "B:USR1@120";
     bool dryRun_ = false;
     bool overwrite_ = false;
+    int contactSheetFrame_ = 0;
+    std::string editor_;
 };
 
 } // namespace airtrap::cli

@@ -52,8 +52,13 @@ SlurmScheduler::submitArguments(const FarmJob& job, const std::string& log,
                                           "--output=" + log};
     if (job.isArray())
         arguments.push_back("--array=0-" + std::to_string(job.frameChunks.size() - 1));
-    if (!dependencies.empty())
-        arguments.push_back("--dependency=afterok:" + joined(dependencies, ':'));
+    if (!dependencies.empty()) {
+        arguments.push_back(std::string("--dependency=") +
+                            (job.afterAny ? "afterany:" : "afterok:") + joined(dependencies, ':'));
+        // A job whose afterok can never be met (what it waits for failed) is cancelled rather
+        // than left waiting for ever; so every job ends, and the contact sheet after them runs.
+        arguments.push_back("--kill-on-invalid-dep=yes");
+    }
     arguments.insert(arguments.end(), job.schedulerOptions.begin(), job.schedulerOptions.end());
     arguments.insert(arguments.end(), extraOptions.begin(), extraOptions.end());
     arguments.push_back(job.script);

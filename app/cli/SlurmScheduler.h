@@ -24,8 +24,9 @@ public:
     //! SchedulerError unless sbatch, squeue and scancel are on the PATH.
     static void requireCommands();
 
-    //! The sbatch command line that submits `job`: its log, its array, `afterok` on the ids of
-    //! `dependencies`, its own options, then `extraOptions` (the user's `--sbatch`).
+    //! The sbatch command line that submits `job`: its log, its array, `afterok` (or `afterany`)
+    //! on the ids of `dependencies`, its own options, then `extraOptions` (the user's
+    //! `--sbatch`).
     static std::vector<std::string> submitArguments(const FarmJob& job, const std::string& log,
                                                     const std::vector<std::string>& dependencies,
                                                     const std::vector<std::string>& extraOptions);

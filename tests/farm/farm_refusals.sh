@@ -3,8 +3,9 @@
 # does not validate or a broken wedge file (refused before anything is written, naming the key and
 # value), an output folder holding another submission (unless --overwrite), no sbatch on the PATH,
 # a controller that does not answer, sbatch refusing a job halfway (the jobs already queued are
-# cancelled), and a task that fails (farm status shows it with its log tail; farm cancel ends the
-# jobs left waiting for it).
+# cancelled), a task that fails (farm status shows it with its log tail, and the job waiting for
+# it is cancelled rather than left waiting for ever), and farm cancel stopping a running bake with
+# its cache consistent.
 source "$(dirname "$0")/farm_support.sh"
 
 write_scene scene.json 12 0.04
@@ -71,7 +72,7 @@ echo "refused: a controller that does not answer; a submission sbatch refused ha
 "$cli" farm submit scene.json --out failing --threads 1 --chunk 4 --stages bake,export \
     --export obj >/dev/null || fail "submit failing"
 for _ in $(seq 120); do
-    [[ "$(squeue -h -t RUNNING,PENDING -o '%T %r' | grep -vc DependencyNeverSatisfied)" == 0 ]] && break
+    [[ -z "$(unfinished "$(job_ids failing)")" ]] && break
     sleep 0.5
 done
 "$cli" farm status failing --lines 3 | tee status.txt
@@ -80,9 +81,24 @@ grep -q '| airtrap-cli: .*post' status.txt || fail "status shows no log tail nam
 "$cli" farm status failing --json >status.json
 [[ "$(json status.json 'd["wedges"][0]["jobs"][1]["tasks"][0]["exit"]')" == 2 ]] ||
     fail "status --json gives no exit 2 for the failed task"
-[[ "$(json status.json 'd["wedges"][0]["jobs"][2]["reason"]')" == DependencyNeverSatisfied ]] ||
-    fail "the listing job is not shown waiting for ever"
-"$cli" farm cancel failing | grep -q 'cancelled' || fail "cancel said nothing"
-sleep 1
-[[ -z "$(squeue -h -t PENDING,RUNNING 2>/dev/null)" ]] || fail "cancel left jobs: $(squeue)"
-echo "a failed task shows in farm status with its log tail; farm cancel ends what waits on it"
+[[ "$(json status.json 'd["wedges"][0]["jobs"][2]["state"], d["wedges"][0]["jobs"][2]["reason"]')" == "('CANCELLED', 'DependencyNeverSatisfied')" ]] ||
+    fail "the listing job after the failed export is not cancelled for its dependency"
+echo "a failed task shows in farm status with its log tail; the job after it is cancelled"
+
+write_scene long.json 100 0.02
+"$cli" farm submit long.json --out cancelled --threads 1 --stages bake >/dev/null || fail "submit long"
+for _ in $(seq 300); do
+    (($(find cancelled/base -name 'frame_*.atf' 2>/dev/null | wc -l) >= 5)) && break
+    sleep 0.1
+done
+"$cli" farm cancel cancelled | grep -q 'cancelled the 1 job' || fail "cancel said nothing"
+for _ in $(seq 60); do
+    [[ -z "$(unfinished "$(job_ids cancelled)")" ]] && break
+    sleep 0.5
+done
+"$cli" farm status cancelled | tee cancelled.txt
+grep -q 'bake [0-9]*: CANCELLED' cancelled.txt || fail "the cancelled bake does not show as ended"
+grep -q '^exit=130$' cancelled/farm/records/bake-0.txt ||
+    fail "the bake did not stop as asked: $(cat cancelled/farm/records/bake-0.txt)"
+"$cli" check cancelled/base >/dev/null || fail "the cancelled bake left a damaged cache"
+echo "farm cancel stopped a running bake after its step, with its cache whole"

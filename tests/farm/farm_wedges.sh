@@ -8,10 +8,13 @@ source "$(dirname "$0")/farm_support.sh"
 start_cluster
 
 write_scene scene.json 12 0.04
+# The contact sheet needs the editor beside airtrap-cli (built unless AIRTRAP_BUILD_EDITOR=OFF).
+sheet=()
+[[ -x "$(dirname "$cli")/airtrap" ]] && sheet=(--contact-sheet 12)
 nasty=$'$(touch pwned) `touch pwned` \'quoted\' "double"\nsecond line'
 "$cli" farm submit scene.json --out out --threads 1 --chunk 5 --export obj,ply \
     --wedge solver.viscosity_alpha=0.05 --wedge solver.viscosity_alpha=0.2 \
-    --wedge "name=Tank" --wedge "name=$nasty" >submit.txt || fail "submit: $(cat submit.txt)"
+    --wedge "name=Tank" --wedge "name=$nasty" "${sheet[@]}" >submit.txt || fail "submit: $(cat submit.txt)"
 cat submit.txt
 [[ "$(json out/wedges.json 'len(d["wedges"])')" == 4 ]] || fail "wedges.json lists not 4 wedges"
 wait_for_jobs out 150
@@ -33,6 +36,11 @@ for wedge in status["wedges"]:
                   "export-listing": "export"}.get(job["stage"])
         assert before is None or started >= ended[before], (wedge["name"], job["stage"])
     assert wedge["frames_cached"] == 12, wedge
+for job in status["final_jobs"]:
+    assert job["state"] == "COMPLETED", job
+    last = max(float(t["ended"]) for w in status["wedges"] for j in w["jobs"]
+               for t in j.get("tasks", [j]))
+    assert float(job["started"]) >= last, "the contact sheet started before the last wedge job ended"
 print("every job completed, each after the jobs it waits for")
 CHECK
 
@@ -66,3 +74,13 @@ done
 [[ $found == 1 ]] || fail "no wedge's manifest holds the wedged name as literal text"
 find "$work" -name pwned | grep -q . && fail "a wedged value was run by the shell"
 echo "the wedged name with \$(…), backquotes, quotes and a newline reached Airtrap as text"
+
+if ((${#sheet[@]})); then
+    size="$(python3 -c 'import struct, sys; d = open(sys.argv[1], "rb").read(24); print(*struct.unpack(">II", d[16:24]))' out/contact_sheet.png)"
+    # Four tiles of 640 × 360 in two rows, each above a 34-pixel label, with 6-pixel gaps.
+    [[ "$size" == "1298 806" ]] || fail "contact_sheet.png is $size, not 1298 806"
+    for picture in out/farm/sheet/*.png; do
+        [[ $(stat -c %s "$picture") -gt 10000 ]] || fail "$picture is (nearly) empty"
+    done
+    echo "contact_sheet.png tiles the four wedges' frame 12"
+fi
