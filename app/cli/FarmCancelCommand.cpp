@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <iostream>
+#include <set>
 
 namespace airtrap::cli {
 
@@ -22,8 +23,13 @@ ExitCode FarmCancelCommand::run() {
         throw Error(ErrorKind::InvalidInput, dir_ + " holds no farm submission (no wedges.json)");
     const std::vector<std::string> ids = FarmListing::read(layout.wedgesFile().string()).jobIds();
     SlurmScheduler::requireCommands();
-    SlurmScheduler::cancel(ids);
-    std::cout << "cancelled the " << ids.size() << " job(s) of " << layout.root.string()
+    // Only the jobs still waiting or running: the count says what this did.
+    std::set<std::string> active;
+    for (const auto& [id, state] : SlurmScheduler::queued(ids))
+        if (state.active())
+            active.insert(id.substr(0, id.find('_')));
+    SlurmScheduler::cancel({active.begin(), active.end()});
+    std::cout << "cancelled the " << active.size() << " job(s) of " << layout.root.string()
               << " that were still queued or running\n";
     return ExitCode::Success;
 }

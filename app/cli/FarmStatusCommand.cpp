@@ -46,15 +46,6 @@ int framesCached(const FarmWedge& entry) {
     }
 }
 
-bool isActive(const std::string& state) {
-    for (const char* active :
-         {"PENDING", "CONFIGURING", "RUNNING", "COMPLETING", "SUSPENDED", "REQUEUED",
-          "REQUEUE_HOLD", "REQUEUE_FED", "RESIZING", "SIGNALING", "STAGE_OUT", "STOPPED"})
-        if (state == active)
-            return true;
-    return false;
-}
-
 //! `base` with the members of `more` added.
 nlohmann::json with(nlohmann::json base, const nlohmann::json& more) {
     base.update(more);
@@ -96,7 +87,7 @@ nlohmann::json FarmStatusCommand::taskState(const FarmJob& job, int task, const 
     // While it waits or runs, the queue knows best (a requeued job's record is of its last run);
     // once it ended, its record says more: the exit code, the host, when it ran.
     const std::map<std::string, std::string> record = readRecord(layout.record(job.key, task));
-    if (queued != sources.queued.end() && (isActive(queued->second.state) || record.empty()))
+    if (queued != sources.queued.end() && (queued->second.active() || record.empty()))
         return with(state, {{"state", queued->second.state}, {"reason", queued->second.reason}});
     const JobState* pending = task >= 0 ? pendingArray(job.id, sources.queued) : nullptr;
     if (record.empty() && pending != nullptr)

@@ -36,6 +36,15 @@ ChildResult call(const std::vector<std::string>& arguments) {
 
 } // namespace
 
+bool JobState::active() const {
+    for (const char* waitingOrRunning :
+         {"PENDING", "CONFIGURING", "RUNNING", "COMPLETING", "SUSPENDED", "REQUEUED",
+          "REQUEUE_HOLD", "REQUEUE_FED", "RESIZING", "SIGNALING", "STAGE_OUT", "STOPPED"})
+        if (state == waitingOrRunning)
+            return true;
+    return false;
+}
+
 void SlurmScheduler::requireCommands() {
     for (const char* command : {"sbatch", "squeue", "scancel"})
         if (!ChildProcess::onPath(command))
