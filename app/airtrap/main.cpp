@@ -24,6 +24,7 @@ struct EditorOptions {
     bool takeScreenshot = false;
     QString contactSheetPath; //!< --contact-sheet: tile the renders of --tiles into this PNG
     QString tilesPath;
+    int sheetColumns = 0; //!< --columns: tiles per row (0: about √n)
 };
 
 //! Bad command-line input: the reason on stderr and exit code 2, like airtrap-cli.
@@ -150,14 +151,26 @@ EditorOptions parseOptions(const QApplication& app) {
         QStringLiteral("For --contact-sheet: a file with one render per line, its path, a tab "
                        "and its label."),
         QStringLiteral("list.tsv"));
+    const QCommandLineOption columns(
+        QStringLiteral("columns"),
+        QStringLiteral("For --contact-sheet: tiles per row (default about the square root of "
+                       "their number)."),
+        QStringLiteral("n"));
     parser.addOptions({scene, cache, frame, screenshot, size, window, show, camera, surface,
-                       particleSize, noSelection, contactSheet, tiles});
+                       particleSize, noSelection, contactSheet, tiles, columns});
     parser.process(app);
     EditorOptions options;
     options.contactSheetPath = parser.value(contactSheet);
     options.tilesPath = parser.value(tiles);
     if (parser.isSet(contactSheet) != parser.isSet(tiles))
         refuse(QStringLiteral("--contact-sheet and --tiles go together"));
+    if (parser.isSet(columns)) {
+        bool ok = false;
+        options.sheetColumns = parser.value(columns).toInt(&ok);
+        if (!ok || options.sheetColumns < 1 || options.sheetColumns > 100)
+            refuse(QStringLiteral("--columns %1: expected a number from 1 to 100")
+                       .arg(parser.value(columns)));
+    }
 
     options.scenePath =
         parser.isSet(scene) ? parser.value(scene) : parser.positionalArguments().value(0);
@@ -216,8 +229,9 @@ int makeContactSheet(const EditorOptions& options) {
         refuse(error);
     const QSize tileSize =
         options.screenshot.size.isValid() ? options.screenshot.size : QSize(640, 360);
-    error = airtrap::ContactSheet::save(airtrap::ContactSheet::compose(tiles, tileSize),
-                                        options.contactSheetPath);
+    error = airtrap::ContactSheet::save(
+        airtrap::ContactSheet::compose(tiles, tileSize, options.sheetColumns),
+        options.contactSheetPath);
     if (!error.isEmpty()) {
         std::fprintf(stderr, "airtrap: cannot write the contact sheet: %s\n", qPrintable(error));
         return 4;

@@ -141,6 +141,10 @@ ExitCode BakeCommand::summarise(const ProgressLine& progress, double wallSeconds
 }
 
 ExitCode BakeCommand::run() {
+    // First: a farm's warning signal may come while a large scene still loads, and unhandled it
+    // would end the process rather than stop it (docs/FARM.md "Preemption and time limits").
+    Interrupter interrupter;
+    const SignalStopper stopper(interrupter);
     const LoadedScene loaded = SceneLoader::load(scenePath_, overrides_);
     for (const std::string& warning : loaded.warnings)
         std::cerr << "warning: " << warning << '\n';
@@ -164,8 +168,6 @@ ExitCode BakeCommand::run() {
     baker.onFrame([&](int frame, const FrameStats& stats) { progress.frameDone(frame, stats); });
     baker.onMessage([&](const std::string& message) { progress.note("note: " + message); });
 
-    Interrupter interrupter;
-    const SignalStopper stopper(interrupter);
     const auto start = std::chrono::steady_clock::now();
     Baker::Outcome outcome;
     try {

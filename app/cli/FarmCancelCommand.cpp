@@ -19,7 +19,8 @@ void FarmCancelCommand::addTo(CLI::App& parent) {
 
 ExitCode FarmCancelCommand::run() {
     const FarmLayout layout{std::filesystem::absolute(dir_)};
-    if (!std::filesystem::exists(layout.wedgesFile()))
+    std::error_code error;
+    if (!std::filesystem::exists(layout.wedgesFile(), error))
         throw Error(ErrorKind::InvalidInput, dir_ + " holds no farm submission (no wedges.json)");
     const std::vector<std::string> ids = FarmListing::read(layout.wedgesFile().string()).jobIds();
     SlurmScheduler::requireCommands();

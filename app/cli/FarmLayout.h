@@ -9,16 +9,24 @@ namespace airtrap::cli {
 
 struct FarmLayout {
     std::filesystem::path root;
+    //! A dry run writes its scripts, submit.sh and listing in DIR/farm/dry-run, apart from what
+    //! a submission in DIR runs and reads.
+    bool dryRun = false;
 
     std::filesystem::path wedgesFile() const { return root / "wedges.json"; }
     std::filesystem::path farmDir() const { return root / "farm"; }
-    std::filesystem::path jobsDir() const { return farmDir() / "jobs"; }
+    std::filesystem::path scriptsDir() const { return dryRun ? farmDir() / "dry-run" : farmDir(); }
+    std::filesystem::path jobsDir() const { return scriptsDir() / "jobs"; }
+    //! Where this run's listing goes: wedges.json, or the dry run's own.
+    std::filesystem::path listingFile() const {
+        return dryRun ? scriptsDir() / "wedges.json" : wedgesFile();
+    }
     std::filesystem::path logsDir() const { return farmDir() / "logs"; }
     std::filesystem::path recordsDir() const { return farmDir() / "records"; }
-    std::filesystem::path submitScript() const { return farmDir() / "submit.sh"; }
+    std::filesystem::path submitScript() const { return scriptsDir() / "submit.sh"; }
     std::filesystem::path wedgeDir(const std::string& wedge) const { return root / wedge; }
     std::filesystem::path contactSheet() const { return root / "contact_sheet.png"; }
-    std::filesystem::path sheetTiles() const { return farmDir() / "contact_sheet.tsv"; }
+    std::filesystem::path sheetTiles() const { return scriptsDir() / "contact_sheet.tsv"; }
     std::filesystem::path sheetRender(const std::string& wedge) const {
         return farmDir() / "sheet" / (wedge + ".png");
     }

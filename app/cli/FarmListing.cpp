@@ -8,8 +8,13 @@ namespace airtrap::cli {
 namespace {
 
 nlohmann::json jobJson(const FarmJob& job) {
-    return {{"key", job.key},       {"stage", job.stage}, {"id", job.id},
-            {"script", job.script}, {"after", job.after}, {"frame_chunks", job.frameChunks}};
+    return {{"key", job.key},
+            {"stage", job.stage},
+            {"id", job.id},
+            {"script", job.script},
+            {"after", job.after},
+            {"after_any", job.afterAny},
+            {"frame_chunks", job.frameChunks}};
 }
 
 FarmJob jobFrom(const nlohmann::json& json, const std::string& wedge) {
@@ -26,9 +31,6 @@ FarmJob jobFrom(const nlohmann::json& json, const std::string& wedge) {
 }
 
 nlohmann::json wedgeJson(const FarmWedge& entry) {
-    nlohmann::json values = nlohmann::json::object();
-    for (std::size_t i = 0; i < entry.wedge.keys.size(); ++i)
-        values[entry.wedge.keys[i]] = entry.wedge.values[i];
     nlohmann::json jobs = nlohmann::json::array();
     for (const FarmJob& job : entry.jobs)
         jobs.push_back(jobJson(job));
@@ -60,11 +62,11 @@ nlohmann::json FarmListing::toJson() const {
     nlohmann::json list = nlohmann::json::array();
     for (const FarmWedge& entry : wedges)
         list.push_back(wedgeJson(entry));
-    return {{"format", kFormatName},
-            {"version", kVersion},
-            {"scene", scene},
-            {"overrides", overrides},
-            {"wedges", list}};
+    nlohmann::json lastJobs = nlohmann::json::array();
+    for (const FarmJob& job : finalJobs)
+        lastJobs.push_back(jobJson(job));
+    return {{"format", kFormatName},  {"version", kVersion}, {"scene", scene},
+            {"overrides", overrides}, {"wedges", list},      {"final_jobs", lastJobs}};
 }
 
 FarmListing FarmListing::read(const std::string& path) {

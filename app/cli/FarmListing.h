@@ -3,21 +3,13 @@
 // wedge's values and folder, and each job with its script and scheduler id. `farm status` and
 // `farm cancel` read it; a second `farm submit` into the same folder compares against it.
 #include "FarmJob.h"
-#include "WedgePlan.h"
+#include "FarmWedge.h"
 
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 namespace airtrap::cli {
-
-struct FarmWedge {
-    Wedge wedge;
-    std::string folder; //!< the wedge's cache folder
-    int firstFrame = 1;
-    int lastFrame = 1;
-    std::vector<FarmJob> jobs;
-};
 
 struct FarmListing {
     static constexpr const char* kFormatName = "airtrap-farm";

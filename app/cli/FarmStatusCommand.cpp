@@ -46,6 +46,15 @@ int framesCached(const FarmWedge& entry) {
     }
 }
 
+//! End states Slurm sets itself: the job did not end by its own exit.
+bool endedBySlurm(const std::string& state) {
+    for (const char* end :
+         {"TIMEOUT", "NODE_FAIL", "OUT_OF_MEMORY", "BOOT_FAIL", "DEADLINE", "PREEMPTED"})
+        if (state == end)
+            return true;
+    return false;
+}
+
 //! `base` with the members of `more` added.
 nlohmann::json with(nlohmann::json base, const nlohmann::json& more) {
     base.update(more);
@@ -78,41 +87,67 @@ std::string FarmStatusCommand::tail(const std::string& path) const {
     return text;
 }
 
+nlohmann::json FarmStatusCommand::recordState(const std::map<std::string, std::string>& record,
+                                              const std::string& log) const {
+    const auto field = [&](const char* key) {
+        const auto at = record.find(key);
+        return at == record.end() ? std::string() : at->second;
+    };
+    const int exit = std::atoi(field("exit").empty() ? "-1" : field("exit").c_str());
+    nlohmann::json state = {{"state", exit == 0     ? "COMPLETED"
+                                      : exit == 75  ? "PREEMPTED"
+                                      : exit == 130 ? "CANCELLED"
+                                                    : "FAILED"},
+                            {"exit", exit},
+                            {"host", field("host")},
+                            {"started", field("started")},
+                            {"ended", field("ended")}};
+    if (exit != 0)
+        state["log_tail"] = tail(log);
+    return state;
+}
+
 nlohmann::json FarmStatusCommand::taskState(const FarmJob& job, int task, const Sources& sources,
                                             const FarmLayout& layout) const {
     const std::string id = task < 0 ? job.id : job.id + "_" + std::to_string(task);
     const std::string log = (layout.logsDir() / (job.key + "-" + id + ".log")).string();
-    nlohmann::json state = {{"id", id}, {"log", log}};
+    const nlohmann::json state = {{"id", id}, {"log", log}};
+    const std::map<std::string, std::string> record = ownRecord(job, task, layout);
     const auto queued = sources.queued.find(id);
-    // While it waits or runs, the queue knows best (a requeued job's record is of its last run);
-    // once it ended, its record says more: the exit code, the host, when it ran.
-    const std::map<std::string, std::string> record = readRecord(layout.record(job.key, task));
-    if (queued != sources.queued.end() && (queued->second.active() || record.empty()))
-        return with(state, {{"state", queued->second.state}, {"reason", queued->second.reason}});
+    if (queued != sources.queued.end()) {
+        const JobState& scheduler = queued->second;
+        const nlohmann::json said = {{"state", scheduler.state}, {"reason", scheduler.reason}};
+        // While it waits or runs, the queue knows best (a requeued job's record is of its last
+        // run); when Slurm itself ended it (a time limit, a lost node), so does its end state.
+        if (scheduler.active() || record.empty())
+            return with(state, said);
+        if (endedBySlurm(scheduler.state))
+            return with(with(state, recordState(record, log)), said);
+    }
     const JobState* pending = task >= 0 ? pendingArray(job.id, sources.queued) : nullptr;
     if (record.empty() && pending != nullptr)
         return with(state, {{"state", pending->state}, {"reason", pending->reason}});
-    if (!record.empty()) {
-        const int exit = std::atoi(record.count("exit") ? record.at("exit").c_str() : "-1");
-        state.update({{"state", exit == 0     ? "COMPLETED"
-                                : exit == 75  ? "PREEMPTED"
-                                : exit == 130 ? "CANCELLED"
-                                              : "FAILED"},
-                      {"exit", exit},
-                      {"host", record.count("host") ? record.at("host") : ""},
-                      {"started", record.count("started") ? record.at("started") : ""},
-                      {"ended", record.count("ended") ? record.at("ended") : ""}});
-        if (exit != 0)
-            state["log_tail"] = tail(log);
-        return state;
-    }
+    // Once it ended, its record says most: the exit code, the host, when it ran.
+    if (!record.empty())
+        return with(state, recordState(record, log));
     if (const auto accounted = sources.accounted.find(id); accounted != sources.accounted.end())
         return with(state,
                     {{"state", accounted->second.state}, {"reason", accounted->second.reason}});
     return with(state, {{"state", job.id.empty() ? "NOT SUBMITTED" : "UNKNOWN"},
                         {"reason", job.id.empty() ? "a dry run"
-                                                  : "no record: not run yet, "
-                                                    "or ended without one"}});
+                                                  : "no record: not run yet, or ended without "
+                                                    "one, and Slurm no longer lists it"}});
+}
+
+std::map<std::string, std::string> FarmStatusCommand::ownRecord(const FarmJob& job, int task,
+                                                                const FarmLayout& layout) const {
+    std::map<std::string, std::string> record = readRecord(layout.record(job.key, task));
+    // A record of an earlier submission into this folder (a script run by hand, a job this
+    // submission replaced) is not this job's.
+    const char* idField = task < 0 ? "job" : "array_job";
+    if (!record.empty() && (!record.contains(idField) || record.at(idField) != job.id))
+        record.clear();
+    return record;
 }
 
 nlohmann::json FarmStatusCommand::jobState(const FarmJob& job, const Sources& sources,
@@ -189,7 +224,8 @@ void FarmStatusCommand::print(const nlohmann::json& status) const {
 
 ExitCode FarmStatusCommand::run() {
     const FarmLayout layout{fs::absolute(dir_)};
-    if (!fs::exists(layout.wedgesFile()))
+    std::error_code error;
+    if (!fs::exists(layout.wedgesFile(), error))
         throw Error(ErrorKind::InvalidInput,
                     dir_ +
                         " holds no farm submission (no wedges.json); submit with airtrap-cli "

@@ -2,7 +2,7 @@
 // `airtrap-cli farm status DIR [--json] [--lines N]`: each wedge's frames cached and each job's
 // (and array task's) state — from squeue while it is queued or running, then from the exit
 // record its script left in DIR/farm/records, or from sacct where the cluster keeps accounting;
-// the log tail of every failed task (docs/FARM.md "Watching").
+// the log tail of every failed task (docs/FARM.md "farm status").
 #include "Command.h"
 #include "FarmLayout.h"
 #include "FarmListing.h"
@@ -27,6 +27,12 @@ private:
     //! The state of `job`, or of its array task `task` (≥ 0).
     nlohmann::json taskState(const FarmJob& job, int task, const Sources& sources,
                              const FarmLayout& layout) const;
+    //! A task's state from its exit record.
+    nlohmann::json recordState(const std::map<std::string, std::string>& record,
+                               const std::string& log) const;
+    //! The exit record of `job` (task `task`, or −1), if this submission's job wrote it.
+    std::map<std::string, std::string> ownRecord(const FarmJob& job, int task,
+                                                 const FarmLayout& layout) const;
     nlohmann::json jobState(const FarmJob& job, const Sources& sources,
                             const FarmLayout& layout) const;
     nlohmann::json wedgeState(const FarmWedge& entry, const Sources& sources,

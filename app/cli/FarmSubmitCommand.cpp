@@ -1,7 +1,9 @@
 #include "FarmSubmitCommand.h"
 
+#include "FarmContactSheet.h"
 #include "FarmScriptWriter.h"
 #include "FrameRange.h"
+#include "Joined.h"
 #include "SceneLoader.h"
 #include "SchedulerError.h"
 #include "ShellQuote.h"
@@ -25,13 +27,6 @@ namespace {
 
 const std::vector<std::string> kStages = {"bake", "post", "export"};
 const std::vector<std::string> kFormats = {"obj", "vdb", "ply"};
-
-std::string joined(const std::vector<std::string>& words, const std::string& separator) {
-    std::string text;
-    for (const std::string& word : words)
-        text += (text.empty() ? "" : separator) + word;
-    return text;
-}
 
 std::string absolute(const std::string& path) {
     return fs::weakly_canonical(fs::absolute(path)).string();
@@ -122,6 +117,16 @@ void FarmSubmitCommand::checkOptions() const {
                         "--export " + format + ": expected obj, vdb or ply");
     for (const std::string& option : sbatch_)
         sbatchOption(option);
+    // Paths end up in job scripts, one quoted word each, and in their comments, where a line
+    // break would end the comment and start a command.
+    for (const auto& [option, path] :
+         {std::pair{"SCENE", scenePath_}, {"--out", outDir_}, {"--editor", editor_}})
+        if (std::any_of(path.begin(), path.end(),
+                        [](char c) { return static_cast<unsigned char>(c) < 0x20; }))
+            throw Error(ErrorKind::InvalidInput,
+                        std::string(option) +
+                            ": the path holds a control character (a line break, a tab); "
+                            "choose one without");
     if (contactSheetFrame_ > 0)
         editorPath();
     if (signal_.empty() || signal_.find_first_of(" \t\n'\"") != std::string::npos)
@@ -164,13 +169,31 @@ FarmListing FarmSubmitCommand::planWedges() const {
     return listing;
 }
 
+void FarmSubmitCommand::refuseWhileRunning(const FarmListing& earlier,
+                                           const FarmLayout& layout) const {
+    std::vector<std::string> running;
+    for (const auto& [id, state] : SlurmScheduler::queued(earlier.jobIds()))
+        if (state.active())
+            running.push_back(id);
+    if (!running.empty())
+        throw Error(ErrorKind::InvalidInput,
+                    "jobs of the submission in " + layout.root.string() +
+                        " are still queued or running (" + joined(running, ", ") +
+                        "); wait for them to end, or run airtrap-cli farm cancel " +
+                        shellQuote(layout.root.string()) + " first");
+}
+
 void FarmSubmitCommand::prepareFolder(const FarmListing& listing, const FarmLayout& layout) const {
     if (FrameCache::isCache(layout.root.string()))
         throw Error(ErrorKind::InvalidInput,
                     layout.root.string() + " is an Airtrap cache; give farm its own folder");
-    if (!fs::exists(layout.wedgesFile()))
+    std::error_code error;
+    if (!fs::exists(layout.wedgesFile(), error))
         return;
     const FarmListing earlier = FarmListing::read(layout.wedgesFile().string());
+    // Two bakes into one cache, or a folder deleted under a running job, would lose work.
+    if (!dryRun_)
+        refuseWhileRunning(earlier, layout);
     if (earlier.sameBakes(listing))
         return; // submitted again: each bake continues its cache (--resume)
     if (!overwrite_)
@@ -178,11 +201,16 @@ void FarmSubmitCommand::prepareFolder(const FarmListing& listing, const FarmLayo
                     layout.root.string() + " holds the wedges of another submission (" +
                         layout.wedgesFile().string() +
                         "); add --overwrite to replace them, or choose another --out folder");
+    if (dryRun_)
+        return; // a dry run deletes nothing
+    std::vector<fs::path> earlierFiles = {layout.farmDir(), layout.wedgesFile()};
     for (const FarmWedge& entry : earlier.wedges)
         if (fs::path(entry.folder).parent_path() == layout.root)
-            fs::remove_all(entry.folder);
-    fs::remove_all(layout.farmDir());
-    fs::remove(layout.wedgesFile());
+            earlierFiles.emplace_back(entry.folder);
+    for (const fs::path& path : earlierFiles)
+        if (fs::remove_all(path, error); error)
+            throw Error(ErrorKind::Io,
+                        AtomicFile::errorMessage("cannot delete", path.string(), error.value()));
 }
 
 std::vector<std::string> FarmSubmitCommand::resourceOptions() const {
@@ -229,8 +257,9 @@ FarmJob FarmSubmitCommand::bakeJob(const FarmWedge& entry, const std::string& su
         bake.insert(bake.end(), {"--set", assignment});
     for (const std::string& assignment : entry.wedge.assignments())
         bake.insert(bake.end(), {"--set", assignment});
-    FarmScriptWriter::write(job.script, FarmScriptWriter(layout).script(
-                                            job, "bake of wedge " + entry.wedge.name, {bake}));
+    FarmScriptWriter::write(
+        job.script, FarmScriptWriter(layout).script(job, "bake of wedge " + entry.wedge.name,
+                                                    {bake}, entry.folder));
     return job;
 }
 
@@ -324,45 +353,6 @@ std::vector<FarmJob> FarmSubmitCommand::planJobs(const FarmWedge& entry, std::si
     return jobs;
 }
 
-std::string FarmSubmitCommand::submitScript(const FarmListing& listing,
-                                            const FarmLayout& layout) const {
-    // A job's id lands in a shell variable named after its key ('-' is not allowed there).
-    const auto variable = [](std::string key) {
-        std::replace(key.begin(), key.end(), '-', '_');
-        return "id_" + key;
-    };
-    std::string text = "#!/bin/bash\n# The sbatch commands of this farm submission, in order "
-                       "(docs/FARM.md): every Slurm option\n# is here. Run it by hand to submit "
-                       "the same jobs again; each bake continues its cache.\nset -eu\n";
-    const auto lineOf = [&](const FarmJob& job) {
-        std::string line = variable(job.key) + "=$(";
-        const std::vector<std::string> arguments = SlurmScheduler::submitArguments(
-            job, layout.logPattern(job.key, job.isArray()).string(), {}, extraOptions());
-        for (const std::string& argument : arguments) {
-            if (&argument != &arguments.front())
-                line += ' ';
-            line += shellQuote(argument);
-            if (argument == "--parsable" && !job.after.empty()) {
-                line += job.afterAny ? " --dependency=afterany" : " --dependency=afterok";
-                for (const std::string& key : job.after)
-                    line += ":\"$" + variable(key) + "\"";
-                line += " --kill-on-invalid-dep=yes";
-            }
-        }
-        return line + ")\necho \"" + job.key + ": $" + variable(job.key) + "\"\n";
-    };
-    for (const FarmWedge& entry : listing.wedges) {
-        text += "\n# wedge " + entry.wedge.name + "\n";
-        for (const FarmJob& job : entry.jobs)
-            text += lineOf(job);
-    }
-    if (!listing.finalJobs.empty())
-        text += "\n# after every wedge\n";
-    for (const FarmJob& job : listing.finalJobs)
-        text += lineOf(job);
-    return text;
-}
-
 void FarmSubmitCommand::submitAll(FarmListing& listing, const FarmLayout& layout) const {
     std::map<std::string, std::string> ids;
     std::vector<std::string> submitted;
@@ -419,19 +409,23 @@ void FarmSubmitCommand::report(const FarmListing& listing, const FarmLayout& lay
 
 void FarmSubmitCommand::createFolders(const FarmLayout& layout) const {
     std::error_code error;
-    // Records of an earlier submission would read as this one's.
-    fs::remove_all(layout.recordsDir(), error);
-    for (const fs::path& dir : {layout.jobsDir(), layout.logsDir(), layout.recordsDir()})
+    std::vector<fs::path> folders = {layout.jobsDir()};
+    if (!dryRun_) {
+        // Records of an earlier submission would read as this one's.
+        fs::remove_all(layout.recordsDir(), error);
+        folders.insert(folders.end(), {layout.logsDir(), layout.recordsDir()});
+    }
+    for (const fs::path& dir : folders)
         if (fs::create_directories(dir, error); error)
             throw Error(ErrorKind::Io, AtomicFile::errorMessage("cannot create folder",
                                                                 dir.string(), error.value()));
 }
 
 std::string FarmSubmitCommand::editorPath() const {
-    const fs::path editor = editor_.empty()
-                                ? fs::canonical("/proc/self/exe").parent_path() / "airtrap"
-                                : fs::path(editor_);
     std::error_code error;
+    const fs::path editor = editor_.empty()
+                                ? fs::canonical("/proc/self/exe", error).parent_path() / "airtrap"
+                                : fs::path(editor_);
     if (!fs::is_regular_file(editor, error) || ::access(editor.c_str(), X_OK) != 0)
         throw Error(ErrorKind::InvalidInput,
                     "--contact-sheet renders with the editor, but " + editor.string() +
@@ -439,41 +433,22 @@ std::string FarmSubmitCommand::editorPath() const {
     return absolute(editor.string());
 }
 
-FarmJob FarmSubmitCommand::contactSheetJob(const FarmListing& listing,
-                                           const FarmLayout& layout) const {
-    FarmJob job = newJob("contact-sheet", "contact-sheet", "");
-    job.script = (layout.jobsDir() / "contact-sheet.sh").string();
-    job.afterAny = true;
-    job.schedulerOptions = {"--nodes=1", "--ntasks=1", "--cpus-per-task=1"};
-    std::vector<FarmScriptWriter::SheetRender> renders;
-    std::string tiles;
-    for (const FarmWedge& entry : listing.wedges) {
-        for (const FarmJob& other : entry.jobs)
-            job.after.push_back(other.key);
-        const std::string picture = layout.sheetRender(entry.wedge.name).string();
-        renders.push_back({entry.folder, picture});
-        std::string label;
-        for (std::size_t i = 0; i < entry.wedge.keys.size(); ++i)
-            label += (i == 0 ? "" : "   ") + entry.wedge.keys[i] + " = " + entry.wedge.values[i];
-        // One line per tile: a tab or a newline in a value would start another field or tile.
-        std::replace_if(
-            label.begin(), label.end(), [](char c) { return c == '\t' || c == '\n' || c == '\r'; },
-            ' ');
-        tiles += picture + "\t" + (label.empty() ? entry.wedge.name : label) + "\n";
-    }
-    fs::create_directories(layout.sheetRender("x").parent_path());
-    AtomicFile::write(layout.sheetTiles().string(), tiles);
-    FarmScriptWriter::write(job.script,
-                            FarmScriptWriter(layout).contactSheetScript(
-                                job, editorPath(), contactSheetFrame_, renders,
-                                layout.sheetTiles().string(), layout.contactSheet().string()));
-    return job;
+void FarmSubmitCommand::checkContactSheetFrame(const FarmListing& listing) const {
+    for (const FarmWedge& entry : listing.wedges)
+        if (contactSheetFrame_ < entry.firstFrame || contactSheetFrame_ > entry.lastFrame)
+            throw Error(ErrorKind::InvalidInput,
+                        "--contact-sheet " + std::to_string(contactSheetFrame_) + ": wedge " +
+                            entry.wedge.name + " bakes frames " + std::to_string(entry.firstFrame) +
+                            " to " + std::to_string(entry.lastFrame) +
+                            "; choose a frame in that range");
 }
 
 ExitCode FarmSubmitCommand::run() {
     checkOptions();
     FarmListing listing = planWedges();
-    const FarmLayout layout{absolute(outDir_)};
+    if (contactSheetFrame_ > 0)
+        checkContactSheetFrame(listing);
+    const FarmLayout layout{absolute(outDir_), dryRun_};
     if (!dryRun_)
         SlurmScheduler::requireCommands();
     prepareFolder(listing, layout);
@@ -481,14 +456,15 @@ ExitCode FarmSubmitCommand::run() {
     for (std::size_t i = 0; i < listing.wedges.size(); ++i)
         listing.wedges[i].jobs = planJobs(listing.wedges[i], i, layout);
     if (contactSheetFrame_ > 0)
-        listing.finalJobs.push_back(contactSheetJob(listing, layout));
-    const std::string commands = submitScript(listing, layout);
+        listing.finalJobs.push_back(
+            FarmContactSheet::plan(listing, layout, editorPath(), contactSheetFrame_));
+    const std::string commands = FarmScriptWriter(layout).submitScript(listing, extraOptions());
     FarmScriptWriter::write(layout.submitScript().string(), commands);
     if (dryRun_)
         std::cout << commands << '\n';
     else
         submitAll(listing, layout);
-    listing.write(layout.wedgesFile().string());
+    listing.write(layout.listingFile().string());
     report(listing, layout);
     return ExitCode::Success;
 }

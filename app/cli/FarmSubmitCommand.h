@@ -25,7 +25,8 @@ private:
     //! Every wedge, each loaded as its bake will load it: a wedge that does not validate stops
     //! the submission, named with its values.
     FarmListing planWedges() const;
-    //! Refuses an output folder that holds other bakes (unless --overwrite, which clears them).
+    //! Refuses an output folder that holds other bakes (unless --overwrite, which clears them;
+    //! a dry run deletes nothing).
     void prepareFolder(const FarmListing& listing, const FarmLayout& layout) const;
     void createFolders(const FarmLayout& layout) const;
     //! The jobs of one wedge, with their scripts written.
@@ -39,13 +40,12 @@ private:
     std::vector<FarmJob> exportJobs(const FarmWedge& entry, const std::string& suffix,
                                     const std::vector<std::string>& after,
                                     const FarmLayout& layout) const;
-    //! The job after every other that renders frame --contact-sheet of each wedge into
-    //! DIR/contact_sheet.png; its tile list is written beside the scripts.
-    FarmJob contactSheetJob(const FarmListing& listing, const FarmLayout& layout) const;
+    //! Refuses a --contact-sheet frame that some wedge does not bake.
+    void checkContactSheetFrame(const FarmListing& listing) const;
+    //! Refuses to touch a folder whose earlier submission still has jobs queued or running.
+    void refuseWhileRunning(const FarmListing& earlier, const FarmLayout& layout) const;
     //! The editor that renders the contact sheet: --editor, or `airtrap` beside airtrap-cli.
     std::string editorPath() const;
-    //! The sbatch command lines of every job, in submission order; farm/submit.sh holds them.
-    std::string submitScript(const FarmListing& listing, const FarmLayout& layout) const;
     //! Submits in order, each with afterok on the ids of the jobs it waits for. When one is
     //! refused, cancels those already queued and throws.
     void submitAll(FarmListing& listing, const FarmLayout& layout) const;

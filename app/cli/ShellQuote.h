@@ -1,5 +1,7 @@
 #pragma once
-// Quoting for the commands airtrap-cli prints for the user to paste (the resume hint).
+// Quoting for shell text airtrap-cli writes: the commands it prints for the user to paste (the
+// resume hint) and the farm's job scripts, where it is what keeps a value from a scene or a
+// wedge (`$(…)`, backquotes, quotes, newlines) from ever being run.
 #include <string>
 
 namespace airtrap::cli {

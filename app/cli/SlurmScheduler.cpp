@@ -1,6 +1,7 @@
 #include "SlurmScheduler.h"
 
 #include "ChildProcess.h"
+#include "Joined.h"
 #include "SchedulerError.h"
 
 #include <set>
@@ -17,13 +18,6 @@ std::vector<std::string> fields(const std::string& line, char separator) {
     while (std::getline(stream, part, separator))
         parts.push_back(part);
     return parts;
-}
-
-std::string joined(const std::vector<std::string>& ids, char separator) {
-    std::string text;
-    for (const std::string& id : ids)
-        text += (text.empty() ? "" : std::string(1, separator)) + id;
-    return text;
 }
 
 ChildResult call(const std::vector<std::string>& arguments) {
@@ -63,7 +57,7 @@ SlurmScheduler::submitArguments(const FarmJob& job, const std::string& log,
         arguments.push_back("--array=0-" + std::to_string(job.frameChunks.size() - 1));
     if (!dependencies.empty()) {
         arguments.push_back(std::string("--dependency=") +
-                            (job.afterAny ? "afterany:" : "afterok:") + joined(dependencies, ':'));
+                            (job.afterAny ? "afterany:" : "afterok:") + joined(dependencies, ":"));
         // A job whose afterok can never be met (what it waits for failed) is cancelled rather
         // than left waiting for ever; so every job ends, and the contact sheet after them runs.
         arguments.push_back("--kill-on-invalid-dep=yes");
@@ -120,7 +114,7 @@ std::map<std::string, JobState> SlurmScheduler::accounted(const std::vector<std:
         return {};
     const ChildResult result =
         ChildProcess::run({"sacct", "--noheader", "--parsable2", "--allocations",
-                           "--jobs=" + joined(ids, ','), "--format=JobID,State,ExitCode"});
+                           "--jobs=" + joined(ids, ","), "--format=JobID,State,ExitCode"});
     std::map<std::string, JobState> states;
     if (!result.succeeded())
         return states;

@@ -5,22 +5,13 @@
 // shell. A missing command or a controller that does not answer → SchedulerError with the
 // scheduler's own one-line reason.
 #include "FarmJob.h"
+#include "JobState.h"
 
 #include <map>
 #include <string>
 #include <vector>
 
 namespace airtrap::cli {
-
-//! A job or array task as the scheduler reports it.
-struct JobState {
-    std::string id;     //!< "123", or "123_4" for task 4 of array 123
-    std::string state;  //!< PENDING, RUNNING, COMPLETED, FAILED, CANCELLED, …
-    std::string reason; //!< why it waits (squeue), or its exit code (sacct)
-
-    //! Still to run or running (pending, running, completing, suspended, requeued, …).
-    bool active() const;
-};
 
 class SlurmScheduler {
 public:

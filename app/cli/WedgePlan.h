@@ -1,22 +1,14 @@
 #pragma once
-// The wedges of `farm submit` (docs/FARM.md "Wedges"): one bake per combination of parameter
+// The wedges of `farm submit` (docs/FARM.md "farm submit"): one bake per combination of parameter
 // values, the way an artist explores a look. `--wedge key=VALUE` repeated for one key adds a
 // value; different keys make the cross product. Values keep `--set`'s syntax (a vector stays
 // `1,2,0.5`), so a wedge is the scene with a list of `--set` assignments.
+#include "Wedge.h"
+
 #include <string>
 #include <vector>
 
 namespace airtrap::cli {
-
-struct Wedge {
-    //! Folder name: each key's last part and its value, e.g. "viscosity_alpha-0.05"; "base"
-    //! when nothing is wedged.
-    std::string name;
-    std::vector<std::string> keys;   //!< in the order given
-    std::vector<std::string> values; //!< one per key, `--set` syntax
-    //! "key=value" for each key, as `--set` takes them.
-    std::vector<std::string> assignments() const;
-};
 
 class WedgePlan {
 public:

@@ -198,29 +198,39 @@ bool SequenceExporter::exportFrame(int frame, ExportReport& report) {
     return true;
 }
 
-ExportReport SequenceExporter::listFilesPresent(const std::vector<int>& frames) const {
-    const std::set<int> wanted(frames.begin(), frames.end());
+std::set<std::string> SequenceExporter::stemsPresent() const {
     std::string extension = ".";
     extension += exportFormatName(options_.format);
-    ExportReport report;
+    std::set<std::string> stems;
     std::error_code error;
-    for (const auto& item : std::filesystem::directory_iterator(options_.outDir, error)) {
-        const std::string name = item.path().filename().string();
-        if (!name.ends_with(extension))
-            continue;
-        const std::string stem = name.substr(0, name.size() - extension.size());
-        const std::size_t underscore = stem.rfind('_');
-        const std::string digits =
-            underscore == std::string::npos ? std::string() : stem.substr(underscore + 1);
-        const bool numbered = !digits.empty() && digits.size() <= 9 &&
-                              std::all_of(digits.begin(), digits.end(),
-                                          [](unsigned char c) { return std::isdigit(c); });
-        if (numbered && wanted.contains(std::stoi(digits)))
-            report.files.push_back(name);
+    std::filesystem::directory_iterator item(options_.outDir, error);
+    for (; !error && item != std::filesystem::directory_iterator(); item.increment(error)) {
+        const std::string name = item->path().filename().string();
+        const std::size_t underscore = name.rfind('_');
+        if (name.ends_with(extension) && underscore != std::string::npos && underscore > 0)
+            stems.insert(name.substr(0, underscore));
     }
     if (error)
         throw Error(ErrorKind::Io,
                     AtomicFile::errorMessage("cannot list folder", options_.outDir, error.value()));
+    return stems;
+}
+
+ExportReport SequenceExporter::listFilesPresent(const std::vector<int>& frames) const {
+    // Every writer has ended: what a killed one left is of no use.
+    AtomicFile::removeOrphanedTemporaries(options_.outDir);
+    ExportReport report;
+    // The folder's listing only says which sequences there are. Each frame's file is then
+    // looked up by its name: on a network file system a listing read here may not show yet
+    // what another machine wrote a moment ago, while a lookup by name asks the server.
+    for (const std::string& stem : stemsPresent())
+        for (const int frame : frames) {
+            const std::string name =
+                sequenceFileName(stem, frame, std::string(exportFormatName(options_.format)));
+            std::error_code error;
+            if (std::filesystem::is_regular_file(path(name), error))
+                report.files.push_back(name);
+        }
     std::sort(report.files.begin(), report.files.end());
     writeListing(report.files);
     return report;

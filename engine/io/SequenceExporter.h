@@ -26,6 +26,7 @@
 #include "post/SubgridStore.h"
 #include "scene/Scene.h"
 
+#include <set>
 #include <string>
 #include <vector>
 
@@ -78,6 +79,8 @@ private:
     void writePlyFiles(const FrameData& data, ExportReport& report) const;
     //! ExportListingMode::Only: lists the files of this format and `frames` in the folder.
     ExportReport listFilesPresent(const std::vector<int>& frames) const;
+    //! The stems ("water", "bubbles") of this format's files in the output folder.
+    std::set<std::string> stemsPresent() const;
     void writeListing(const std::vector<std::string>& files) const;
     //! The scene makes sub-grid bubbles: it simulates bubbles and sheds some.
     bool exportsSubgrid() const;

@@ -13,6 +13,7 @@
 #include <chrono>
 #include <exception>
 #include <mutex>
+#include <optional>
 #include <utility>
 
 namespace airtrap {
@@ -23,6 +24,15 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+//! The sub-grid pass, for runs that make the sub-grid bubbles. Opening it adopts the settings
+//! in subgrid.json, which part runs must leave to the one run after them.
+std::optional<SubgridPass> subgridPassOf(const FrameCache& cache, const Scene& scene,
+                                         const PostOptions& options) {
+    if (!options.subgrid || !options.part.empty())
+        return std::nullopt;
+    return std::optional<SubgridPass>(std::in_place, cache, scene);
+}
+
 } // namespace
 
 PostStage::PostStage(const FrameCache& cache, const Scene& scene, PostOptions options)
@@ -30,7 +40,7 @@ PostStage::PostStage(const FrameCache& cache, const Scene& scene, PostOptions op
       store_(options_.part.empty()
                  ? PostStore::openOrEmpty(cache.directory(), storeDamage_)
                  : PostStore::openPart(cache.directory(), options_.part, storeDamage_)),
-      subgrid_(cache, scene) {
+      subgrid_(subgridPassOf(cache, scene, options_)) {
     store_.useSettings(settingsOf(scene_));
 }
 
@@ -76,7 +86,7 @@ void PostStage::makeFrame(int frame, Interrupter& interrupter, PostReport& repor
 }
 
 void PostStage::addSubgridBubbles(int lastFrame, Interrupter& interrupter, PostReport& report) {
-    report.subgrid = subgrid_.run(lastFrame, interrupter);
+    report.subgrid = subgrid_->run(lastFrame, interrupter);
     const std::string& damaged = report.subgrid.damaged;
     // The surface pass has reported it already when the frame was one of its own.
     if (!damaged.empty() &&
@@ -98,10 +108,10 @@ void PostStage::prepareStore(PostReport& report) {
 PostReport PostStage::run(const std::vector<int>& frames, Interrupter& interrupter) {
     const auto start = std::chrono::steady_clock::now();
     PostReport report;
-    const std::string* const replaced[] = {&storeDamage_, &subgrid_.storeDamage()};
-    for (const std::string* damage : replaced)
-        if (!damage->empty())
-            report.replacedLists.push_back(*damage);
+    if (!storeDamage_.empty())
+        report.replacedLists.push_back(storeDamage_);
+    if (subgrid_ && !subgrid_->storeDamage().empty())
+        report.replacedLists.push_back(subgrid_->storeDamage());
     prepareStore(report);
     interrupter.start("post");
     std::atomic<int> done{0};
@@ -130,8 +140,7 @@ PostReport PostStage::run(const std::vector<int>& frames, Interrupter& interrupt
     interrupter.end();
     if (firstFailure)
         std::rethrow_exception(firstFailure);
-    const bool subgrid = options_.subgrid && options_.part.empty();
-    if (subgrid && !frames.empty() && !interrupter.stopRequested())
+    if (subgrid_ && !frames.empty() && !interrupter.stopRequested())
         addSubgridBubbles(*std::max_element(frames.begin(), frames.end()), interrupter, report);
     report.stopped =
         (interrupter.stopRequested() && done < int(frames.size())) || report.subgrid.stopped;

@@ -13,6 +13,7 @@
 #include "post/SubgridPass.h"
 #include "scene/Scene.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -77,7 +78,7 @@ private:
     SceneSolids solids_;
     std::string storeDamage_; //!< why post.json was started afresh ("" when it was whole)
     PostStore store_;
-    SubgridPass subgrid_;
+    std::optional<SubgridPass> subgrid_; //!< none when this run leaves the sub-grid pass out
     std::mutex reportMutex_;
 };
 

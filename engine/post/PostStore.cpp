@@ -105,9 +105,13 @@ int PostStore::mergeParts(std::vector<std::string>& damaged) {
     if (!std::filesystem::is_directory(partsDir, error))
         return 0;
     std::vector<std::filesystem::path> parts;
-    for (const auto& item : std::filesystem::directory_iterator(partsDir, error))
-        if (item.path().extension() == ".json")
-            parts.push_back(item.path());
+    std::filesystem::directory_iterator item(partsDir, error);
+    for (; !error && item != std::filesystem::directory_iterator(); item.increment(error))
+        if (item->path().extension() == ".json")
+            parts.push_back(item->path());
+    if (error)
+        throw Error(ErrorKind::Io, AtomicFile::errorMessage("cannot list folder", partsDir.string(),
+                                                            error.value()));
     std::sort(parts.begin(), parts.end());
     int merged = 0;
     for (const std::filesystem::path& part : parts) {

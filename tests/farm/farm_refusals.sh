@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # What farm submit refuses, and what a failure looks like, on a real one-node Slurm: a wedge that
 # does not validate or a broken wedge file (refused before anything is written, naming the key and
-# value), an output folder holding another submission (unless --overwrite), no sbatch on the PATH,
+# value), a dry run kept apart, an output folder holding another submission (unless --overwrite)
+# or one whose jobs still run, no sbatch on the PATH,
 # a controller that does not answer, sbatch refusing a job halfway (the jobs already queued are
 # cancelled), a task that fails (farm status shows it with its log tail, and the job waiting for
 # it is cancelled rather than left waiting for ever), and farm cancel stopping a running bake with
@@ -29,20 +30,31 @@ expect_exit 2 bad-file "$cli" farm submit scene.json --out bad --dry-run --wedge
 grep -q 'wedges.json: "solver.viscosity_alpha": expected an array' bad-file.err ||
     fail "bad-file: $(cat bad-file.err)"
 
-expect_exit 0 first "$cli" farm submit scene.json --out taken --dry-run --wedge solver.viscosity_alpha=0.1
-expect_exit 2 other "$cli" farm submit scene.json --out taken --dry-run --wedge solver.viscosity_alpha=0.2
-grep -q -- '--overwrite' other.err || fail "other: $(cat other.err)"
-expect_exit 0 overwrite "$cli" farm submit scene.json --out taken --dry-run --overwrite \
-    --wedge solver.viscosity_alpha=0.2
-[[ "$(json taken/wedges.json 'd["wedges"][0]["values"]')" == "['0.2']" ]] ||
-    fail "overwrite: wedges.json is not the new submission's"
+expect_exit 0 dry "$cli" farm submit scene.json --out dry --dry-run --wedge solver.viscosity_alpha=0.1
+[[ -s dry/farm/dry-run/submit.sh && -s dry/farm/dry-run/jobs/bake-0.sh ]] ||
+    fail "dry: no scripts in dry/farm/dry-run"
+[[ ! -e dry/wedges.json ]] || fail "dry: a dry run wrote the submission's wedges.json"
 
 expect_exit 7 no-sbatch env PATH=/nonexistent "$cli" farm submit scene.json --out nosbatch
 grep -q 'sbatch is not on the PATH' no-sbatch.err || fail "no-sbatch: $(cat no-sbatch.err)"
 [[ "$(wc -l <no-sbatch.err)" -eq 1 ]] || fail "no-sbatch: more than one line: $(cat no-sbatch.err)"
-echo "refused: an out-of-range wedge, a wedge file without arrays, a taken folder, no sbatch"
+echo "refused: an out-of-range wedge, a wedge file without arrays, no sbatch; a dry run apart"
 
 start_cluster
+
+expect_exit 0 first "$cli" farm submit scene.json --out taken --stages bake --threads 1 \
+    --wedge solver.viscosity_alpha=0.1
+wait_for_jobs taken 60
+expect_exit 2 other "$cli" farm submit scene.json --out taken --stages bake --threads 1 \
+    --wedge solver.viscosity_alpha=0.2
+grep -q -- '--overwrite' other.err || fail "other: $(cat other.err)"
+expect_exit 0 overwrite "$cli" farm submit scene.json --out taken --stages bake --threads 1 \
+    --overwrite --wedge solver.viscosity_alpha=0.2
+[[ "$(json taken/wedges.json 'd["wedges"][0]["values"]')" == "['0.2']" ]] ||
+    fail "overwrite: wedges.json is not the new submission's"
+[[ ! -e taken/viscosity_alpha-0.1 ]] || fail "overwrite: the replaced wedge's folder is still there"
+wait_for_jobs taken 60
+echo "refused: a folder holding another submission, unless --overwrite"
 
 sed 's/^SlurmctldPort=.*/SlurmctldPort=1/' "$SLURM_CONF" >dead.conf
 expect_exit 7 dead env SLURM_CONF="$work/dead.conf" "$cli" farm submit scene.json --out dead
@@ -91,6 +103,8 @@ for _ in $(seq 300); do
     (($(find cancelled/base -name 'frame_*.atf' 2>/dev/null | wc -l) >= 5)) && break
     sleep 0.1
 done
+expect_exit 2 busy "$cli" farm submit long.json --out cancelled --threads 1 --stages bake
+grep -q 'still queued or running' busy.err || fail "busy: $(cat busy.err)"
 "$cli" farm cancel cancelled | grep -q 'cancelled the 1 job' || fail "cancel said nothing"
 for _ in $(seq 60); do
     [[ -z "$(unfinished "$(job_ids cancelled)")" ]] && break
@@ -101,4 +115,4 @@ grep -q 'bake [0-9]*: CANCELLED' cancelled.txt || fail "the cancelled bake does 
 grep -q '^exit=130$' cancelled/farm/records/bake-0.txt ||
     fail "the bake did not stop as asked: $(cat cancelled/farm/records/bake-0.txt)"
 "$cli" check cancelled/base >/dev/null || fail "the cancelled bake left a damaged cache"
-echo "farm cancel stopped a running bake after its step, with its cache whole"
+echo "a folder whose bake still runs is refused; farm cancel stopped it after its step, cache whole"

@@ -47,7 +47,7 @@ json() {
 
 # The job ids of a submission, from its wedges.json.
 job_ids() {
-    json "$1/wedges.json" '",".join(j["id"] for w in d["wedges"] for j in w["jobs"])'
+    json "$1/wedges.json" '",".join([j["id"] for w in d["wedges"] for j in w["jobs"]] + [j["id"] for j in d["final_jobs"]])'
 }
 
 # The states of the jobs and array tasks $1 (comma-separated ids) that have not ended yet; Slurm

@@ -44,6 +44,9 @@ private Q_SLOTS:
         QCOMPARE(sheet.pixelColor(6 + 166 + 80, 6 + 45), QColor(70, 70, 74).toRgb()); // missing
         QCOMPARE(sheet.pixelColor(6 + 80, 6 + 130 + 45), QColor(Qt::red));
         QVERIFY(ContactSheet::save(sheet, path("sheet.png")).isEmpty());
+        // Asked for three columns: one row.
+        QCOMPARE(ContactSheet::compose(tiles, QSize(160, 90), 3).size(),
+                 QSize(3 * 160 + 4 * 6, 90 + 34 + 2 * 6));
         QCOMPARE(QImage(path("sheet.png")).size(), sheet.size());
     }
 

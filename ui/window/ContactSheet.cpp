@@ -66,9 +66,12 @@ void ContactSheet::drawTile(QImage& sheet, const Tile& tile, const QRect& area) 
         painter.fontMetrics().elidedText(tile.label, Qt::ElideRight, label.width() - 16));
 }
 
-QImage ContactSheet::compose(const std::vector<Tile>& tiles, const QSize& tileSize) {
+QImage ContactSheet::compose(const std::vector<Tile>& tiles, const QSize& tileSize,
+                             int requestedColumns) {
     const int count = int(tiles.size());
-    const int columns = std::max(1, int(std::ceil(std::sqrt(double(count)))));
+    const int columns = requestedColumns > 0
+                            ? std::min(requestedColumns, std::max(1, count))
+                            : std::max(1, int(std::ceil(std::sqrt(double(count)))));
     const int rows = (count + columns - 1) / columns;
     const QSize cell(tileSize.width(), tileSize.height() + kLabelHeight);
     QImage sheet(columns * cell.width() + (columns + 1) * kGap,

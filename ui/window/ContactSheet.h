@@ -1,8 +1,9 @@
 #pragma once
 // One picture of several renders side by side, each labelled, for comparing the wedges of a farm
-// submission at a glance (docs/FARM.md "Contact sheet"): `airtrap --contact-sheet OUT.png
-// --tiles LIST.tsv`. A tile whose render is missing (its wedge failed) is drawn as a grey panel
-// that says so, so the sheet still shows every wedge.
+// submission at a glance (docs/FARM.md, farm submit --contact-sheet): `airtrap --contact-sheet
+// OUT.png
+// --tiles LIST.tsv [--columns N]`. A tile whose render is missing (its wedge failed) is drawn as a
+// grey panel that says so, so the sheet still shows every wedge.
 #include <QImage>
 #include <QString>
 #include <QStringList>
@@ -21,9 +22,9 @@ public:
     //! `error` (naming the file and line) and an empty list when it cannot be read.
     static std::vector<Tile> readTiles(const QString& listPath, QString& error);
 
-    //! The sheet: tiles in rows of about √n, each `tileSize` (renders are scaled to it) above its
-    //! label.
-    static QImage compose(const std::vector<Tile>& tiles, const QSize& tileSize);
+    //! The sheet: tiles in rows of `columns` (about √n when 0), each `tileSize` (renders are
+    //! scaled to it) above its label.
+    static QImage compose(const std::vector<Tile>& tiles, const QSize& tileSize, int columns = 0);
 
     //! Writes `sheet` to `path` as PNG through a temporary file renamed over it, so a reader never
     //! sees half a picture. Empty on success, else the reason.
