@@ -66,14 +66,18 @@ void FarmSubmitCommand::addTo(CLI::App& parent) {
         ->required();
     app_->add_option("--wedge", wedges_,
                      "key=VALUE in --set's syntax; repeat a key for more values, several keys "
-                     "make the cross product");
+                     "make the cross product")
+        ->allow_extra_args(false);
     app_->add_option("--wedge-file", wedgeFile_,
                      "JSON object: each key with the array of its values");
-    app_->add_option("--set", overrides_, "Override a scene value in every wedge (repeatable)");
+    app_->add_option("--set", overrides_, "Override a scene value in every wedge (repeatable)")
+        ->allow_extra_args(false);
     app_->add_option("--stages", stages_, "Stages to run, in order: bake,post,export")
-        ->delimiter(',');
+        ->delimiter(',')
+        ->allow_extra_args(false);
     app_->add_option("--export", formats_, "Export formats: obj,vdb,ply (default obj)")
-        ->delimiter(',');
+        ->delimiter(',')
+        ->allow_extra_args(false);
     app_->add_option("--up", up_, "Up axis of the exported files: y (default) or z")
         ->check(CLI::IsMember({"y", "z"}));
     app_->add_option("--chunk", chunk_, "Frames per post and export task (default 10)")
@@ -84,7 +88,8 @@ void FarmSubmitCommand::addTo(CLI::App& parent) {
         ->check(CLI::Range(0, 4096));
     app_->add_option("--sbatch", sbatch_,
                      "key=value passed to sbatch as --key=value (partition, account, time, "
-                     "mem, …; repeatable)");
+                     "mem, …; repeatable)")
+        ->allow_extra_args(false);
     app_->add_option("--signal", signal_,
                      "Warning signal before the time limit, sbatch's --signal syntax (default "
                      "B:USR1@120)");
