@@ -28,8 +28,13 @@ namespace {
 const std::vector<std::string> kStages = {"bake", "post", "export"};
 const std::vector<std::string> kFormats = {"obj", "vdb", "ply"};
 
+//! `path` made absolute, with "." and ".." and symbolic links resolved where it exists: the job
+//! scripts run on other machines, from other working folders.
 std::string absolute(const std::string& path) {
-    return fs::weakly_canonical(fs::absolute(path)).string();
+    std::error_code error;
+    const fs::path whole = fs::absolute(path, error);
+    const fs::path resolved = fs::weakly_canonical(whole, error);
+    return (error ? whole : resolved).string();
 }
 
 //! `key=value` of --sbatch as sbatch's own `--key=value`.
