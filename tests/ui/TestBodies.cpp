@@ -11,6 +11,7 @@
 #include "support/WidgetTestMain.h"
 #include "viewport/ViewportWidget.h"
 #include "window/EditorActions.h"
+#include "window/EditorSettings.h"
 #include "window/LogPanel.h"
 #include "window/MainWindow.h"
 
@@ -71,8 +72,8 @@ class TestBodies : public QObject {
 
 private Q_SLOTS:
     void initTestCase() {
-        QStandardPaths::setTestModeEnabled(true);
-        QSettings(QStringLiteral("Airtrap"), QStringLiteral("Airtrap")).clear();
+        // The test main's scratch store: start from no saved view options.
+        EditorSettings::store().clear();
     }
 
     void eachShapeIsAddedAboveTheWaterAndUndone() {

@@ -12,6 +12,7 @@
 #include "support/WidgetTestMain.h"
 #include "timeline/TimelineWidget.h"
 #include "window/EditorActions.h"
+#include "window/EditorSettings.h"
 #include "window/LogPanel.h"
 #include "window/MainWindow.h"
 
@@ -68,8 +69,8 @@ class TestEditor : public QObject {
 
 private Q_SLOTS:
     void initTestCase() {
-        QStandardPaths::setTestModeEnabled(true);
-        QSettings(QStringLiteral("Airtrap"), QStringLiteral("Airtrap")).clear();
+        // The test main's scratch store: start from no saved view options or recent files.
+        EditorSettings::store().clear();
     }
 
     void opensEverySample() {

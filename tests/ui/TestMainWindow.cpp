@@ -4,6 +4,7 @@
 #include "support/WidgetTestMain.h"
 #include "viewport/ViewportWidget.h"
 #include "window/EditorActions.h"
+#include "window/EditorSettings.h"
 #include "window/MainWindow.h"
 
 #include <QAction>
@@ -23,10 +24,9 @@ class TestMainWindow : public QObject {
 
 private Q_SLOTS:
     void initTestCase() {
-        // Keep the window geometry the test saves away from the user's real settings.
-        QStandardPaths::setTestModeEnabled(true);
-        // Start from no saved geometry, so remembersGeometry() cannot pass on a previous run's.
-        QSettings(QStringLiteral("Airtrap"), QStringLiteral("Airtrap")).clear();
+        // The test main's scratch store keeps the geometry the test saves away from the user's
+        // settings; start it empty, so remembersGeometry() cannot pass on a previous run's.
+        EditorSettings::store().clear();
     }
 
     void showsWithFileMenu() {

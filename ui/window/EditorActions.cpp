@@ -31,6 +31,11 @@ EditorActions::EditorActions(QWidget* window) : QObject(window), window_(window)
     makeSimulationActions();
     makeViewActions();
     makePlaybackActions();
+    guide = make("guideAction", tr("Editor &Guide"), tr("How to use the editor (docs/EDITOR.md)"));
+    guide->setShortcut(QKeySequence::HelpContents);
+    shortcutSheet = make("shortcutSheetAction", tr("&Keyboard Shortcuts"),
+                         tr("Every key the editor knows, and the mouse in the viewport"));
+    shortcutSheet->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_F1));
     about = make("aboutAction", tr("&About Airtrap"), tr("Version and the method behind it"));
     about->setMenuRole(QAction::AboutRole);
 }
@@ -58,7 +63,9 @@ void EditorActions::makeFileActions() {
     saveScene->setShortcut(QKeySequence::Save);
     saveScene->setIcon(standardIcon(QStyle::SP_DialogSaveButton));
     saveSceneAs = make("saveSceneAsAction", tr("Save &As…"), tr("Save the scene to a new file"));
-    saveSceneAs->setShortcut(QKeySequence::SaveAs);
+    // Spelled out: QKeySequence::SaveAs is empty outside KDE and GNOME (the Keyboard Shortcuts
+    // sheet showed it missing), and Ctrl+Shift+S is what users expect everywhere.
+    saveSceneAs->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S));
     quit = make("quitAction", tr("&Quit"), tr("Close the editor"));
     // Spelled out: QKeySequence::Quit is empty on some desktops, Ctrl+Q is what users expect.
     quit->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Q));

@@ -63,6 +63,8 @@ public:
     QAction* lastFrame;
     QAction* loop;
     // Help
+    QAction* guide;
+    QAction* shortcutSheet;
     QAction* about;
 
 private:

@@ -17,9 +17,11 @@
 #include "window/CacheLocation.h"
 #include "window/EditorActions.h"
 #include "window/EditorSettings.h"
+#include "window/GuideDialog.h"
 #include "window/LogPanel.h"
 #include "window/RecentFiles.h"
 #include "window/RenderSession.h"
+#include "window/ShortcutSheet.h"
 #include "window/StatusBarFields.h"
 #include "window/ViewPreferences.h"
 
@@ -209,6 +211,8 @@ void MainWindow::createMenus() {
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->setObjectName(QStringLiteral("helpMenu"));
+    help->addActions({actions_->guide, actions_->shortcutSheet});
+    help->addSeparator();
     help->addAction(actions_->about);
 }
 
@@ -308,6 +312,8 @@ void MainWindow::connectActions() {
     connect(actions_->loop, &QAction::toggled, timeline_, &TimelineWidget::setLoop);
     timeline_->setLoop(actions_->loop->isChecked());
     connect(actions_->about, &QAction::triggered, this, &MainWindow::showAbout);
+    connect(actions_->guide, &QAction::triggered, this, &MainWindow::showGuide);
+    connect(actions_->shortcutSheet, &QAction::triggered, this, &MainWindow::showShortcuts);
 }
 
 // --- Document -----------------------------------------------------------------------------------
@@ -491,6 +497,22 @@ void MainWindow::onFrameLoaded(int frame, std::shared_ptr<const FrameData> frame
 }
 
 // --- Window -------------------------------------------------------------------------------------
+
+void MainWindow::showGuide() {
+    showHelpDialog(new GuideDialog(this));
+}
+
+void MainWindow::showShortcuts() {
+    showHelpDialog(new ShortcutSheet(this));
+}
+
+void MainWindow::showHelpDialog(QDialog* dialog) {
+    // Beside the window rather than in front of it: one reads the guide while using the editor.
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->setModal(false);
+    dialog->show();
+    dialog->raise();
+}
 
 void MainWindow::showAbout() {
     QMessageBox::about(this, tr("About Airtrap"),

@@ -13,6 +13,7 @@ class QShowEvent;
 class QDockWidget;
 class QMenu;
 class QAction;
+class QDialog;
 
 namespace airtrap {
 
@@ -123,6 +124,9 @@ private:
     void pointLoaderAtCache();
     void selectSomethingToEdit();
     void showAbout();
+    void showGuide();
+    void showShortcuts();
+    void showHelpDialog(QDialog* dialog);
 
     std::unique_ptr<SceneDocument> document_;
     EditorActions* actions_ = nullptr;

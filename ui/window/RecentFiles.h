@@ -1,5 +1,6 @@
 #pragma once
-// The File ▸ Open Recent menu, remembered across sessions in QSettings.
+// The File ▸ Open Recent menu, remembered across sessions in the editor's settings. Files that no
+// longer exist leave it; two scenes of one name are told apart by their folders.
 #include <QObject>
 #include <QStringList>
 
@@ -22,12 +23,18 @@ public:
     //! Drops `path` (a file that could not be opened any more).
     void remove(const QString& path);
 
+    //! The menu's text for `path`: its file name, with its folder when another listed file has
+    //! the same name.
+    QString label(const QString& path) const;
+
 Q_SIGNALS:
     void fileChosen(const QString& path);
 
 private:
     void save() const;
     void rebuildMenu();
+    //! Forgets the files that no longer exist; true when there were any.
+    bool dropMissing();
 
     QMenu* menu_;
     QStringList files_;
