@@ -32,8 +32,10 @@ bool SetParameterCommand::mergeWith(const QUndoCommand* other) {
     if (next == nullptr || next->dragSession_ != dragSession_ || next->item_ != item_ ||
         next->key_ != key_)
         return false;
-    // The merged command undoes to the value before the drag and redoes to its last value.
+    // The merged command undoes to the value before the drag and redoes to its last value, which
+    // its history line names.
     newValue_ = next->newValue_;
+    setText(next->text());
     return true;
 }
 

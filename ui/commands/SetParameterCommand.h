@@ -13,7 +13,7 @@ class SceneDocument;
 
 class SetParameterCommand : public QUndoCommand {
 public:
-    //! `text` is shown in History ("Set Particle spacing"); `dragSession` 0 never merges.
+    //! `text` is shown in History ("Set Cube density to 2000 kg/m³"); `dragSession` 0 never merges.
     SetParameterCommand(SceneDocument& document, SceneItem item, std::string key,
                         ParameterValue oldValue, ParameterValue newValue, int dragSession,
                         const QString& text);

@@ -4,6 +4,7 @@
 #include "commands/RemoveElementCommand.h"
 #include "commands/SetParameterCommand.h"
 #include "core/Error.h"
+#include "document/EditDescription.h"
 #include "scene/ParameterCodec.h"
 #include "scene/SceneJson.h"
 #include "scene/SceneSchema.h"
@@ -111,7 +112,7 @@ QString SceneDocument::editParameter(const SceneItem& item, const std::string& k
         key == kNameKey
             ? tr("Rename %1 to %2")
                   .arg(elementName(item), QString::fromStdString(std::get<std::string>(newValue)))
-            : tr("Set %1").arg(QString::fromStdString(bound.declaration.label));
+            : EditDescription::ofParameter(elementName(item), bound.declaration, newValue);
     undoStack_->push(
         new SetParameterCommand(*this, item, key, oldValue, newValue, dragSession, text));
     return {};

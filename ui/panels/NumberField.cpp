@@ -1,5 +1,6 @@
 #include "panels/NumberField.h"
 
+#include "panels/CommittedFieldShortcuts.h"
 #include "panels/DecimalRounding.h"
 #include "scene/ParameterCodec.h"
 
@@ -37,6 +38,9 @@ NumberField::NumberField(bool integer, QWidget* parent)
     setKeyboardTracking(false);
     setCorrectionMode(QAbstractSpinBox::CorrectToPreviousValue);
     connect(this, &QAbstractSpinBox::editingFinished, this, &NumberField::commitTypedText);
+    // The spin box has the focus and forwards key events to its line edit: watch both.
+    CommittedFieldShortcuts::install(this, lineEdit());
+    CommittedFieldShortcuts::install(lineEdit(), lineEdit());
 }
 
 void NumberField::setNumber(double number) {

@@ -1,5 +1,7 @@
 #include "panels/StringEditor.h"
 
+#include "panels/CommittedFieldShortcuts.h"
+
 #include <QHBoxLayout>
 #include <QLineEdit>
 #include <QSignalBlocker>
@@ -10,6 +12,7 @@ StringEditor::StringEditor(const ParameterDeclaration& declaration, QWidget* par
     : ParameterEditor(declaration, parent), lineEdit_(new QLineEdit(this)) {
     lineEdit_->setObjectName(QStringLiteral("text"));
     connect(lineEdit_, &QLineEdit::editingFinished, this, &StringEditor::commitText);
+    CommittedFieldShortcuts::install(lineEdit_, lineEdit_);
     auto* layout = new QHBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(lineEdit_);

@@ -172,7 +172,9 @@ void MainWindow::createMenus() {
     undo->setObjectName(QStringLiteral("undoAction"));
     undo->setIcon(style()->standardIcon(QStyle::SP_ArrowBack));
     QAction* redo = document_->undoStack()->createRedoAction(this, tr("&Redo"));
-    redo->setShortcut(QKeySequence::Redo);
+    // Ctrl+Shift+Z everywhere (QKeySequence::Redo is Ctrl+Y alone on some desktops), and Ctrl+Y.
+    redo->setShortcuts(
+        {QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence(Qt::CTRL | Qt::Key_Y)});
     redo->setObjectName(QStringLiteral("redoAction"));
     redo->setIcon(style()->standardIcon(QStyle::SP_ArrowForward));
     edit->addAction(undo);
