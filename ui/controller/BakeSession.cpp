@@ -14,6 +14,7 @@
 #include <QMessageBox>
 #include <QPushButton>
 #include <QTimer>
+#include <utility>
 
 namespace airtrap {
 
@@ -48,11 +49,7 @@ void BakeSession::connectActions() {
 }
 
 void BakeSession::connectController() {
-    connect(&controller_, &SimulationController::stateChanged, this,
-            [this](SimulationController::State state) {
-                timeline_.setBakeRunning(state != SimulationController::State::Idle);
-                updateActions();
-            });
+    connect(&controller_, &SimulationController::stateChanged, this, &BakeSession::onStateChanged);
     connect(&controller_, &SimulationController::progress, this, &BakeSession::onProgress);
     connect(&controller_, &SimulationController::frameFinished, this,
             [this](int frame) { onFrameFinished(frame); });
@@ -79,6 +76,7 @@ void BakeSession::bake() {
     // A fresh bake rewrites the folder: the loader must forget the frames it kept from it.
     loader_.setCacheDirectory(dir);
     log_.info(tr("Baking %1 into %2").arg(document_.displayName(), dir));
+    startMeter();
     controller_.bake(document_.scene(), dir, false);
 }
 
@@ -91,6 +89,7 @@ void BakeSession::resumeBake() {
         return;
     staleFramesAccepted_ = false;
     log_.info(tr("Resuming the bake from frame %1").arg(lastCachedFrame()));
+    startMeter();
     controller_.bake(document_.scene(), cacheDirectory_(), true);
 }
 
@@ -183,11 +182,39 @@ void BakeSession::onFramesListed(const QList<int>& frames) {
 }
 
 void BakeSession::onProgress(const BakeProgress& progress) {
-    statusFields_.showBakeProgress(progress);
-    Q_EMIT statusMessage(tr("Baking frame %1 of %2 — %3 %")
-                             .arg(progress.frame)
-                             .arg(progress.lastFrame)
-                             .arg(qRound(progress.frameFraction * 100.0)));
+    const double fraction = meter_.update(progress);
+    // The bar has the frame and the share; the status message is left to events worth reading.
+    if (meter_.isPaused())
+        statusFields_.showBakePaused(meter_.frame(), meter_.lastFrame(), fraction);
+    else
+        statusFields_.showBakeProgress(progress, fraction, meter_.etaSeconds(secondsNow()));
+}
+
+void BakeSession::onStateChanged(SimulationController::State state) {
+    using State = SimulationController::State;
+    const State before = std::exchange(lastState_, state);
+    timeline_.setBakeRunning(state != State::Idle);
+    updateActions();
+    const int percent = int(meter_.fraction() * 100.0);
+    if (state == State::Paused) {
+        meter_.pause(secondsNow());
+        statusFields_.showBakePaused(meter_.frame(), meter_.lastFrame(), meter_.fraction());
+        log_.info(tr("Bake paused at frame %1 (%2 %)").arg(meter_.frame()).arg(percent));
+        Q_EMIT statusMessage(tr("Bake paused"));
+    } else if (state == State::Running && before == State::Paused) {
+        meter_.resume(secondsNow());
+        log_.info(tr("Bake resumed at frame %1 (%2 %)").arg(meter_.frame()).arg(percent));
+        Q_EMIT statusMessage(tr("Bake resumed"));
+    }
+}
+
+void BakeSession::startMeter() {
+    clock_.start();
+    meter_.start(0.0);
+}
+
+double BakeSession::secondsNow() const {
+    return clock_.isValid() ? double(clock_.nsecsElapsed()) * 1e-9 : 0.0;
 }
 
 void BakeSession::onFinished(bool completed, const QString& status) {

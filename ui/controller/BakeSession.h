@@ -2,6 +2,10 @@
 // The editor's side of baking: the Bake / Pause / Resume / Stop / Clear Cache actions, which
 // frames are cached, and what happens to them when the scene is edited. It talks to the engine
 // only through SimulationController (the bake thread) and FrameLoader (the loader thread).
+#include "controller/BakeProgressMeter.h"
+#include "controller/SimulationController.h"
+
+#include <QElapsedTimer>
 #include <QObject>
 #include <QString>
 #include <functional>
@@ -65,6 +69,10 @@ private:
     void onFrameFinished(int frame);
     void onFramesListed(const QList<int>& frames);
     void onProgress(const BakeProgress& progress);
+    void onStateChanged(SimulationController::State state);
+    //! The meter starts for a bake that begins now.
+    void startMeter();
+    double secondsNow() const;
     void onFinished(bool completed, const QString& status);
     void onFailed(const QString& message);
     void updateActions();
@@ -86,6 +94,9 @@ private:
     QWidget* dialogParent_;
     std::function<QString()> cacheDirectory_;
     std::set<int> cached_;
+    BakeProgressMeter meter_;
+    QElapsedTimer clock_;
+    SimulationController::State lastState_ = SimulationController::State::Idle;
     bool interactive_ = true;
     //! A question about stale frames is queued; edits until it is shown ask nothing more.
     bool staleQuestionPending_ = false;

@@ -6,11 +6,19 @@
 
 #include <QLabel>
 #include <QLocale>
+#include <QProgressBar>
 #include <QStatusBar>
 #include <QStringList>
+#include <algorithm>
 #include <cmath>
 
 namespace airtrap {
+
+namespace {
+
+constexpr int kBarSteps = 1000;
+
+} // namespace
 
 StatusBarFields::StatusBarFields(QStatusBar* statusBar) : QObject(statusBar) {
     frame_ = addField(statusBar, "frameField", tr("Frame shown in the viewport"));
@@ -20,6 +28,15 @@ StatusBarFields::StatusBarFields(QStatusBar* statusBar) : QObject(statusBar) {
                         tr("Trapped air bubbles: alive in that frame, created and deleted up to "
                            "it, with the deletions per rule"));
     bubbles_->hide();
+    progress_ = new QProgressBar(statusBar);
+    progress_->setObjectName(QStringLiteral("bakeProgressBar"));
+    progress_->setToolTip(tr("The bake: frames done of the scene's range, with the share of the "
+                             "frame being computed"));
+    // Per mille, so the current frame's share moves the bar even in a range of many frames.
+    progress_->setRange(0, kBarSteps);
+    progress_->setMinimumWidth(220);
+    progress_->hide();
+    statusBar->addPermanentWidget(progress_);
     step_ = addField(statusBar, "stepField", tr("Wall time per simulation step of the bake"));
     eta_ = addField(statusBar, "etaField", tr("Estimated time until the bake finishes"));
 }
@@ -74,14 +91,34 @@ QString StatusBarFields::bubbleSummary(const SimulationState& state) {
              perRule.join(QStringLiteral(", ")));
 }
 
-void StatusBarFields::showBakeProgress(const BakeProgress& progress) {
+void StatusBarFields::showBakeProgress(const BakeProgress& progress, double fraction,
+                                       double etaSeconds) {
+    showBakeBar(tr("Frame %1 of %2").arg(progress.frame).arg(progress.lastFrame), fraction);
     if (progress.stepsPerSecond > 0.0)
         step_->setText(tr("%1 ms/step").arg(1000.0 / progress.stepsPerSecond, 0, 'f', 1));
-    eta_->setText(progress.etaSeconds >= 0.0 ? tr("ETA %1").arg(duration(progress.etaSeconds))
-                                             : tr("ETA …"));
+    eta_->setText(etaSeconds >= 0.0 ? tr("ETA %1").arg(duration(etaSeconds)) : tr("ETA …"));
+}
+
+void StatusBarFields::showBakePaused(int frame, int lastFrame, double fraction) {
+    // Paused before the first step's report: no frame to name yet.
+    showBakeBar(lastFrame > 0 ? tr("Paused · frame %1 of %2").arg(frame).arg(lastFrame)
+                              : tr("Paused"),
+                fraction);
+    eta_->setText(tr("Paused"));
+}
+
+void StatusBarFields::showBakeBar(const QString& text, double fraction) {
+    const int steps = int(std::floor(std::clamp(fraction, 0.0, 1.0) * kBarSteps));
+    progress_->setValue(steps);
+    // Whole per cents rounded down: 100 % only when the last frame is done. QProgressBar would
+    // read "%p" in the text as its own placeholder, so the number is written out here.
+    progress_->setFormat(QStringLiteral("%1 · %2 %").arg(text).arg(steps * 100 / kBarSteps));
+    progress_->show();
 }
 
 void StatusBarFields::clearBake() {
+    progress_->hide();
+    progress_->reset();
     step_->clear();
     eta_->clear();
 }
