@@ -148,6 +148,8 @@ ExitCode BakeCommand::run() {
     const LoadedScene loaded = SceneLoader::load(scenePath_, overrides_);
     for (const std::string& warning : loaded.warnings)
         std::cerr << "warning: " << warning << '\n';
+    for (const std::string& note : loaded.notes)
+        std::cerr << "note: " << note << '\n';
     const FrameRange range =
         FrameRange::parse(framesText_, loaded.scene.frames.endFrame, "frames.end_frame");
     checkCacheFolder(range);

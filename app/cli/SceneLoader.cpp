@@ -19,9 +19,9 @@ bool overlap(const FluidBlock& a, const FluidBlock& b) {
 } // namespace
 
 LoadedScene SceneLoader::load(const std::string& path, const std::vector<std::string>& overrides) {
-    LoadedScene loaded{readSceneFile(path), {}};
+    LoadedScene loaded{readSceneFile(path), {}, {}};
     applySceneOverrides(loaded.scene, overrides);
-    loaded.warnings = validateScene(loaded.scene);
+    loaded.warnings = validateScene(loaded.scene, &loaded.notes);
     return loaded;
 }
 

@@ -12,6 +12,7 @@ namespace airtrap::cli {
 struct LoadedScene {
     Scene scene;
     std::vector<std::string> warnings;
+    std::vector<std::string> notes;
 };
 
 //! How many water particles the fluid blocks fill at t = 0.

@@ -21,6 +21,8 @@ ExitCode ValidateCommand::run() {
     const LoadedScene loaded = SceneLoader::load(scenePath_, overrides_);
     for (const std::string& warning : loaded.warnings)
         std::cerr << "warning: " << warning << '\n';
+    for (const std::string& note : loaded.notes)
+        std::cerr << "note: " << note << '\n';
     const ParticleEstimate particles = SceneLoader::estimateParticles(loaded.scene);
     std::ostringstream fps;
     fps << loaded.scene.frames.fps;

@@ -13,6 +13,9 @@ namespace airtrap {
 struct SceneIssues {
     std::vector<std::string> errors;
     std::vector<std::string> warnings;
+    //! What the scene does by design that a user may still want to read (a body placed in the
+    //! water displaces it): printed, never asked about.
+    std::vector<std::string> notes;
     bool ok() const { return errors.empty(); }
 };
 

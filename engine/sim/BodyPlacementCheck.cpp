@@ -86,11 +86,13 @@ void checkWater(const Scene& scene, const RigidBody& body, std::size_t index,
         const FluidBlock& block = scene.fluidBlocks[f];
         if (!overlapsWater(body, block, tolerance))
             continue;
-        findings.warnings.push_back(
-            label(scene, index) + " overlaps fluid_blocks[" + std::to_string(f) + "] (" +
-            ParameterCodec::formatValue(block.name) +
-            ") at t = 0; the body displaces it: the block's particles inside the body are left "
-            "out");
+        // Placing a body in a block is how a scene floats or sinks one (samples/buoyancy.json):
+        // a note, not a warning the editor would ask about before every bake.
+        findings.notes.push_back(label(scene, index) + " starts in fluid_blocks[" +
+                                 std::to_string(f) + "] (" +
+                                 ParameterCodec::formatValue(block.name) +
+                                 "); the body displaces it: the block's particles inside the "
+                                 "body are left out");
     }
 }
 

@@ -16,10 +16,12 @@ SceneIssues SceneCheck::run(const Scene& scene) {
         issues.errors.push_back(message.starts_with(source) ? message : source + ": " + message);
     for (const std::string& message : findings.warnings)
         issues.warnings.push_back(source + ": " + message);
+    for (const std::string& message : findings.notes)
+        issues.notes.push_back(source + ": " + message);
     return issues;
 }
 
-std::vector<std::string> validateScene(const Scene& scene) {
+std::vector<std::string> validateScene(const Scene& scene, std::vector<std::string>* notes) {
     SceneIssues issues = SceneCheck::run(scene);
     if (!issues.ok()) {
         std::string message;
@@ -27,6 +29,8 @@ std::vector<std::string> validateScene(const Scene& scene) {
             message += (message.empty() ? "" : "\n") + line;
         throw Error(ErrorKind::InvalidScene, message);
     }
+    if (notes != nullptr)
+        *notes = std::move(issues.notes);
     return issues.warnings;
 }
 

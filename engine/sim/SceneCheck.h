@@ -17,7 +17,8 @@ public:
 };
 
 //! Throws Error(InvalidScene) with all of SceneCheck's errors, one per line; returns the
-//! warnings.
-std::vector<std::string> validateScene(const Scene& scene);
+//! warnings, and the notes into `notes` when given.
+std::vector<std::string> validateScene(const Scene& scene,
+                                       std::vector<std::string>* notes = nullptr);
 
 } // namespace airtrap

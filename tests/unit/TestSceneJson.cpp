@@ -43,6 +43,9 @@ private Q_SLOTS:
         QTest::newRow("hydrostatic") << "hydrostatic.json";
         QTest::newRow("pouring") << "pouring.json";
         QTest::newRow("bubble_column") << "bubble_column.json";
+        // Bodies placed in the water on purpose: notes, no warnings.
+        QTest::newRow("buoyancy") << "buoyancy.json";
+        QTest::newRow("diving_bunny") << "diving_bunny.json";
     }
 
     void samplesLoadAndValidate() {

@@ -29,9 +29,13 @@ BakeResult BakeJob::run() {
 }
 
 BakeResult BakeJob::bake() {
-    for (const std::string& warning : validateScene(scene_))
+    std::vector<std::string> notes;
+    for (const std::string& warning : validateScene(scene_, &notes))
         if (listener_.message)
             listener_.message("warning: " + warning);
+    for (const std::string& note : notes)
+        if (listener_.message)
+            listener_.message("note: " + note);
     Baker baker(scene_, options_);
     baker.onProgress([this](const BakeProgress& progress) { reportProgress(progress); });
     baker.onFrame([this](int frame, const FrameStats& stats) { reportFrame(frame, stats); });
