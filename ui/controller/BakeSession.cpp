@@ -7,10 +7,12 @@
 #include "sim/SceneCheck.h"
 #include "timeline/TimelineWidget.h"
 #include "window/EditorActions.h"
+#include "window/EditorSettings.h"
 #include "window/LogPanel.h"
 #include "window/StatusBarFields.h"
 
 #include <QAction>
+#include <QFileInfo>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QTimer>
@@ -21,6 +23,8 @@ namespace airtrap {
 namespace {
 //! Discarding needs the bake thread gone; a step of a large scene can take seconds.
 constexpr int kStopTimeoutMs = 60000;
+//! The editor's settings key listing the cache folders it made.
+constexpr auto kMadeFoldersKey = "cache/madeFolders";
 } // namespace
 
 BakeSession::BakeSession(SceneDocument& document, SimulationController& controller,
@@ -38,6 +42,10 @@ BakeSession::BakeSession(SceneDocument& document, SimulationController& controll
 
 void BakeSession::setCacheDirectoryProvider(std::function<QString()> provider) {
     cacheDirectory_ = std::move(provider);
+}
+
+void BakeSession::setBakeDirectoryProvider(std::function<QString()> provider) {
+    bakeDirectory_ = std::move(provider);
 }
 
 void BakeSession::connectActions() {
@@ -63,7 +71,9 @@ void BakeSession::connectController() {
 void BakeSession::bake() {
     if (controller_.isBusy() || !acceptOverlaps())
         return;
-    const QString dir = cacheDirectory_();
+    const QString dir = bakeDirectory_ ? bakeDirectory_() : cacheDirectory_();
+    if (dir.isEmpty())
+        return;
     if (lastCachedFrame() > 1 &&
         !confirm(
             tr("Bake"),
@@ -76,6 +86,8 @@ void BakeSession::bake() {
     // A fresh bake rewrites the folder: the loader must forget the frames it kept from it.
     loader_.setCacheDirectory(dir);
     log_.info(tr("Baking %1 into %2").arg(document_.displayName(), dir));
+    if (!QFileInfo::exists(dir))
+        rememberMadeFolder(dir);
     startMeter();
     controller_.bake(document_.scene(), dir, false);
 }
@@ -88,7 +100,8 @@ void BakeSession::resumeBake() {
     if (controller_.isBusy())
         return;
     staleFramesAccepted_ = false;
-    log_.info(tr("Resuming the bake from frame %1").arg(lastCachedFrame()));
+    log_.info(
+        tr("Resuming the bake from frame %1 in %2").arg(lastCachedFrame()).arg(cacheDirectory_()));
     startMeter();
     controller_.bake(document_.scene(), cacheDirectory_(), true);
 }
@@ -96,10 +109,55 @@ void BakeSession::resumeBake() {
 void BakeSession::clearCache() {
     if (controller_.isBusy() || cached_.empty())
         return;
-    if (!confirm(tr("Clear Cache"),
-                 tr("Delete all %1 cached frames of this scene?").arg(cached_.size()), true))
+    const QString dir = cacheDirectory_();
+    if (!madeFolder(dir)) {
+        if (confirm(tr("Clear Cache"),
+                    tr("Delete all %1 cached frames of this scene?").arg(cached_.size()), true))
+            discardFramesAfter(0);
         return;
-    discardFramesAfter(0);
+    }
+    if (!confirm(tr("Clear Cache"),
+                 tr("Delete all %1 cached frames of this scene, their render outputs and the "
+                    "folder %2 made for them?")
+                     .arg(cached_.size())
+                     .arg(dir),
+                 true))
+        return;
+    removeMadeCache(dir);
+}
+
+void BakeSession::removeMadeCache(const QString& dir) {
+    if (controller_.removeCache(dir)) {
+        forgetMadeFolder(dir);
+        log_.info(tr("Cleared the cache and removed its folder %1").arg(dir));
+    } else if (QFileInfo::exists(dir)) {
+        log_.info(tr("Cleared the cache; kept its folder %1, which holds other files").arg(dir));
+    }
+    loader_.refresh();
+}
+
+// --- Folders the editor made ---------------------------------------------------------------------
+
+void BakeSession::rememberMadeFolder(const QString& dir) {
+    QSettings& settings = EditorSettings::store();
+    QStringList folders = settings.value(QLatin1String(kMadeFoldersKey)).toStringList();
+    const QString path = QFileInfo(dir).absoluteFilePath();
+    if (!folders.contains(path))
+        settings.setValue(QLatin1String(kMadeFoldersKey), folders << path);
+}
+
+bool BakeSession::madeFolder(const QString& dir) {
+    return EditorSettings::store()
+        .value(QLatin1String(kMadeFoldersKey))
+        .toStringList()
+        .contains(QFileInfo(dir).absoluteFilePath());
+}
+
+void BakeSession::forgetMadeFolder(const QString& dir) {
+    QSettings& settings = EditorSettings::store();
+    QStringList folders = settings.value(QLatin1String(kMadeFoldersKey)).toStringList();
+    folders.removeAll(QFileInfo(dir).absoluteFilePath());
+    settings.setValue(QLatin1String(kMadeFoldersKey), folders);
 }
 
 bool BakeSession::releaseCache() {

@@ -33,8 +33,11 @@ public:
                 FrameLoader& loader, LogPanel& log, StatusBarFields& statusFields,
                 EditorActions& actions, QWidget* dialogParent);
 
-    //! Where the open scene bakes; asked anew at every bake.
+    //! Where the open scene's cache is; asked anew at every use.
     void setCacheDirectoryProvider(std::function<QString()> provider);
+    //! Where a fresh bake goes, asked before it starts; it may ask the user (a scene in a folder
+    //! that cannot be written) and returns empty when they cancel. Unset: the cache directory.
+    void setBakeDirectoryProvider(std::function<QString()> provider);
     //! False: questions take the answer that loses nothing, and errors go to the log only.
     void setInteractive(bool interactive) { interactive_ = interactive; }
 
@@ -83,7 +86,14 @@ private:
     //! or each other at t = 0 it lists the overlaps and asks "Bake anyway" or "Cancel"; false
     //! when cancelled. Errors are left to the bake, which fails with them.
     bool acceptOverlaps();
-
+    //! Remembers (in the editor's settings, across sessions) that the editor made `dir`, so that
+    //! Clear Cache may remove it again.
+    static void rememberMadeFolder(const QString& dir);
+    static bool madeFolder(const QString& dir);
+    static void forgetMadeFolder(const QString& dir);
+    //! Clear Cache of a folder the editor made: the cache and, when nothing else is in it, the
+    //! folder go.
+    void removeMadeCache(const QString& dir);
     SceneDocument& document_;
     SimulationController& controller_;
     TimelineWidget& timeline_;
@@ -93,6 +103,7 @@ private:
     EditorActions& actions_;
     QWidget* dialogParent_;
     std::function<QString()> cacheDirectory_;
+    std::function<QString()> bakeDirectory_;
     std::set<int> cached_;
     BakeProgressMeter meter_;
     QElapsedTimer clock_;

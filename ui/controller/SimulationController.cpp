@@ -5,6 +5,8 @@
 
 #include <QCoreApplication>
 #include <QDeadlineTimer>
+#include <QDir>
+#include <QFile>
 #include <QThread>
 
 namespace airtrap {
@@ -84,6 +86,24 @@ void SimulationController::discardFramesAfter(const QString& cacheDir, int frame
     } catch (const Error& error) {
         Q_EMIT failed(QString::fromStdString(error.what()));
     }
+}
+
+bool SimulationController::removeCache(const QString& cacheDir) {
+    if (isBusy()) {
+        Q_EMIT failed(tr("Cannot delete the cache %1 while a bake is running").arg(cacheDir));
+        return false;
+    }
+    try {
+        FrameCache cache = FrameCache::open(cacheDir.toStdString());
+        // Frames first (the manifest stops listing them before their files go), then the rest.
+        cache.truncateAfter(0);
+        QFile::remove(QString::fromStdString(cache.manifestPath()));
+    } catch (const Error& error) {
+        Q_EMIT failed(QString::fromStdString(error.what()));
+        return false;
+    }
+    QDir(QDir(cacheDir).filePath(QStringLiteral("post"))).removeRecursively();
+    return QDir().rmdir(cacheDir);
 }
 
 void SimulationController::setState(State state) {

@@ -48,6 +48,11 @@ public:
     //! Deletes every frame after `frame` from the cache in `cacheDir` (e.g. before re-baking the
     //! rest with changed parameters). Only while Idle; errors arrive as failed().
     void discardFramesAfter(const QString& cacheDir, int frame);
+    //! Deletes the cache in `cacheDir` (not while a bake runs): its frames, its manifest and the
+    //! render outputs made from them (post/), then the folder itself when nothing else is left in
+    //! it. Other files (an export/ folder) stay. True when the folder is gone; failures are
+    //! emitted as failed().
+    bool removeCache(const QString& cacheDir);
 
     //! Blocks the calling (GUI) thread until the bake has ended and its final signals have been
     //! delivered, or until `timeoutMs` passed. True when Idle on return. For tests and shutdown.

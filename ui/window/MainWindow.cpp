@@ -14,6 +14,7 @@
 #include "scene/SceneSchema.h"
 #include "timeline/TimelineWidget.h"
 #include "viewport/ViewportWidget.h"
+#include "window/CacheFolderQuestion.h"
 #include "window/CacheLocation.h"
 #include "window/EditorActions.h"
 #include "window/EditorSettings.h"
@@ -87,6 +88,7 @@ void MainWindow::createParts() {
     bakeSession_ = new BakeSession(*document_, *controller_, *timeline_, *loader_, *log_,
                                    *statusFields_, *actions_, this);
     bakeSession_->setCacheDirectoryProvider([this] { return cacheDirectory(); });
+    bakeSession_->setBakeDirectoryProvider([this] { return bakeDirectory(); });
     renderController_ = new RenderOutputController(this);
     renderSession_ =
         new RenderSession(*document_, *renderController_, *log_, *actions_, *statusBar(), this);
@@ -340,7 +342,27 @@ void MainWindow::updateTitle() {
 QString MainWindow::cacheDirectory() const {
     if (!openedCacheDir_.isEmpty())
         return openedCacheDir_;
-    return CacheLocation::forScene(document_->filePath());
+    return cacheLocation_.forScene(document_->filePath());
+}
+
+QString MainWindow::bakeDirectory() {
+    const QString scenePath = document_->filePath();
+    const QString dir = cacheDirectory();
+    // Asked once per scene: when its own folder cannot be written and no folder of its own in
+    // the user's cache exists yet (a later session finds and keeps that one).
+    if (!openedCacheDir_.isEmpty() || scenePath.isEmpty() ||
+        cacheLocation_.canBakeBeside(scenePath) || QFileInfo::exists(dir))
+        return dir;
+    const QString chosen = interactive_ ? CacheFolderQuestion::ask(this, scenePath, dir) : dir;
+    if (chosen.isEmpty()) {
+        log_->info(tr("Bake cancelled: no folder chosen for the frames"));
+        return {};
+    }
+    log_->info(tr("%1 is in a folder that cannot be written; its frames go to %2")
+                   .arg(document_->displayName(), chosen));
+    if (chosen != dir)
+        useCacheFolder(chosen);
+    return chosen;
 }
 
 void MainWindow::selectSomethingToEdit() {

@@ -3,6 +3,7 @@
 // panel, the timeline, the undo history and the log; menus, a toolbar and a status bar. It owns
 // the document and wires the parts together — the parts do not know each other.
 #include "document/SceneItem.h"
+#include "window/CacheLocation.h"
 
 #include <QMainWindow>
 #include <QString>
@@ -59,9 +60,11 @@ public:
     QAction* quitAction() const;
 
     //! Where the open scene bakes: "<scene folder>/<scene name>.cache" for a saved scene, a
-    //! folder in the user's cache location for an unsaved one, or the cache opened with
-    //! openCacheFolder().
+    //! folder in the user's cache location for an unsaved one or one whose folder cannot be
+    //! written, or the cache opened with openCacheFolder() or chosen before a bake.
     QString cacheDirectory() const;
+    //! Where the open scene's cache is looked for: tests tell it which folders are writable.
+    CacheLocation& cacheLocation() { return cacheLocation_; }
 
     //! When false, questions (unsaved changes, discarding frames) take their default answer
     //! without a dialog and errors go to the log only: for tests and the screenshot mode.
@@ -122,6 +125,9 @@ private:
     void onFrameLoaded(int frame, std::shared_ptr<const FrameData> frameData);
     void onTimelineFrameChanged(int frame);
     void pointLoaderAtCache();
+    //! Where a fresh bake goes: the cache directory, or for a scene whose folder cannot be
+    //! written the folder the user chooses (asked once); empty when they cancel.
+    QString bakeDirectory();
     void selectSomethingToEdit();
     void showAbout();
     void showGuide();
@@ -147,6 +153,7 @@ private:
     QMenu* viewMenu_ = nullptr;
     //! Set by openCacheFolder(): bake and view this folder instead of the one next to the file.
     QString openedCacheDir_;
+    CacheLocation cacheLocation_;
     bool interactive_ = true;
     bool useDefaultDockSizes_ = false;
     QString lastError_;
