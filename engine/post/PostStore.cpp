@@ -162,6 +162,12 @@ bool PostStore::isCurrent(int frame, std::uint32_t sourceCrc32) const {
     return damageOf(entry).empty();
 }
 
+bool PostStore::isListedFrom(int frame, std::uint32_t sourceCrc32) const {
+    const std::lock_guard lock(mutex_);
+    const PostFrameEntry* listed = results_.find(frame);
+    return listed != nullptr && listed->sourceCrc32 == sourceCrc32;
+}
+
 std::string PostStore::damageOf(const PostFrameEntry& entry) const {
     const struct {
         std::string path;

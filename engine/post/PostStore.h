@@ -68,6 +68,9 @@ public:
     //! True when `frame` is listed, was made from the cache frame with this checksum, and both
     //! its files still hold what was written (their CRC-32 as listed).
     bool isCurrent(int frame, std::uint32_t sourceCrc32) const;
+    //! True when `frame` is listed as made from the cache frame with this checksum. Unlike
+    //! isCurrent() it reads no file: cheap enough to mark every frame of a timeline.
+    bool isListedFrom(int frame, std::uint32_t sourceCrc32) const;
     //! "<path>: <reason>" for each listed result whose file is missing or no longer matches its
     //! listed CRC-32 (`airtrap-cli check`).
     std::vector<std::string> verify() const;

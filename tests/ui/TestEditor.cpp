@@ -11,6 +11,7 @@
 #include "scene/SceneJson.h"
 #include "support/WidgetTestMain.h"
 #include "timeline/TimelineWidget.h"
+#include "viewport/ViewportWidget.h"
 #include "window/EditorActions.h"
 #include "window/EditorSettings.h"
 #include "window/LogPanel.h"
@@ -174,6 +175,25 @@ private Q_SLOTS:
         window.showFrame(3);
         QTRY_VERIFY_WITH_TIMEOUT(!shown.isEmpty(), 10000);
         QCOMPARE(shown.last().first().toInt(), 3);
+    }
+
+    void anUnbakedFrameSaysSoInTheViewport() {
+        QTemporaryDir folder;
+        const QString scenePath = folder.filePath(QStringLiteral("tiny.json"));
+        writeSceneFile(tinyDamBreak(), scenePath.toStdString());
+        MainWindow window;
+        window.setInteractive(false);
+        window.show();
+        QVERIFY(window.openScene(scenePath));
+        window.showFrame(1);
+        QCOMPARE(window.viewport()->notice(), QString()); // editing the setup
+        window.showFrame(4);
+        QCOMPARE(window.viewport()->notice(), QStringLiteral("Frame 4 is not baked yet"));
+        window.actions().bake->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(!window.controller()->isBusy(), 60000);
+        QTRY_COMPARE_WITH_TIMEOUT(window.timeline()->cachedFrames().size(), 6, 10000);
+        window.showFrame(4);
+        QCOMPARE(window.viewport()->notice(), QString());
     }
 
     //! A mesh body through the whole editor path: the scene's relative mesh path, the bake on

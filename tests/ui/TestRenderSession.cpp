@@ -7,6 +7,7 @@
 #include "controller/SimulationController.h"
 #include "post/PostStore.h"
 #include "support/WidgetTestMain.h"
+#include "timeline/TimelineWidget.h"
 #include "viewport/ViewportWidget.h"
 #include "window/EditorActions.h"
 #include "window/ExportDialog.h"
@@ -57,6 +58,9 @@ private Q_SLOTS:
         const PostStore store = PostStore::open(window.cacheDirectory().toStdString());
         QCOMPARE(store.frames(), (std::vector<int>{1, 2, 3, 4}));
         QCOMPARE(store.settings()["surface_mesh"]["smoothing"].get<int>(), 3);
+        // The timeline marks the frames that now have render outputs.
+        QTRY_COMPARE_WITH_TIMEOUT(window.timeline()->renderOutputFrames(), (QList<int>{1, 2, 3, 4}),
+                                  10000);
         // The frame on screen gets its water surface; another frame gets its own.
         // Until frame 3's mesh arrives the last frame's stays on screen: wait for frame 3's own.
         window.showFrame(3);

@@ -4,7 +4,9 @@
 #include "timeline/FrameRuler.h"
 #include "timeline/TimelineWidget.h"
 
+#include <QComboBox>
 #include <QElapsedTimer>
+#include <QLabel>
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QTest>
@@ -173,6 +175,78 @@ private Q_SLOTS:
         QVERIFY(!timeline.isPlaying());
         QCOMPARE(framesVisited(changes).mid(0, 5), QList<int>({2, 3, 1, 2, 3}));
         QCOMPARE(playing.count(), 2);
+    }
+
+    void theLoopButtonShowsItsState() {
+        TimelineWidget timeline;
+        auto* loop = timeline.findChild<QToolButton*>(QStringLiteral("loopButton"));
+        QVERIFY(!loop->isChecked());
+        QVERIFY(!loop->autoRaise()); // a raised, pressed-in look while on
+        QVERIFY(loop->toolTip().startsWith(QStringLiteral("Loop playback: off")));
+        loop->click();
+        QVERIFY(timeline.loops());
+        QVERIFY(loop->isChecked());
+        QVERIFY(loop->toolTip().startsWith(QStringLiteral("Loop playback: on")));
+        timeline.setLoop(false);
+        QVERIFY(!loop->isChecked());
+        QVERIFY(loop->toolTip().startsWith(QStringLiteral("Loop playback: off")));
+    }
+
+    void theRateIsTheScenesOrEveryFrame() {
+        TimelineWidget timeline;
+        timeline.setFps(24.0);
+        auto* choice = timeline.findChild<QComboBox*>(QStringLiteral("playbackRateChoice"));
+        QCOMPARE(choice->count(), 2);
+        QCOMPARE(choice->itemText(0), QStringLiteral("24 fps"));
+        QCOMPARE(choice->itemText(1), QStringLiteral("Every frame"));
+        QCOMPARE(timeline.playbackRate(), TimelineWidget::PlaybackRate::SceneFps);
+        choice->setCurrentIndex(1);
+        Q_EMIT choice->activated(1);
+        QCOMPARE(timeline.playbackRate(), TimelineWidget::PlaybackRate::EveryFrame);
+    }
+
+    void everyFrameWaitsForTheViewportToShowEachFrame() {
+        TimelineWidget timeline;
+        timeline.setFrameRange(1, 8);
+        timeline.setCachedFrames({1, 2, 3, 4});
+        timeline.setPlaybackRate(TimelineWidget::PlaybackRate::EveryFrame);
+        timeline.play();
+        QTRY_COMPARE_WITH_TIMEOUT(timeline.currentFrame(), 2, 1000);
+        QTest::qWait(150);
+        QCOMPARE(timeline.currentFrame(), 2); // not shown yet: no frame is skipped
+        timeline.frameDisplayed(2);
+        QTRY_COMPARE_WITH_TIMEOUT(timeline.currentFrame(), 3, 1000);
+        timeline.frameDisplayed(3);
+        QTRY_COMPARE_WITH_TIMEOUT(timeline.currentFrame(), 4, 1000);
+        // A frame that never shows (its load failed) holds playback half a second at most.
+        QTRY_VERIFY_WITH_TIMEOUT(!timeline.isPlaying(), 2000);
+    }
+
+    void theAchievedRateIsShown() {
+        TimelineWidget timeline;
+        timeline.setFrameRange(1, 100);
+        QList<int> all;
+        for (int frame = 1; frame <= 100; ++frame)
+            all << frame;
+        timeline.setCachedFrames(all);
+        timeline.setFps(20.0);
+        // A viewport that shows every frame at once.
+        connect(&timeline, &TimelineWidget::currentFrameChanged, &timeline,
+                &TimelineWidget::frameDisplayed);
+        timeline.play();
+        QTRY_VERIFY_WITH_TIMEOUT(timeline.currentFrame() >= 16, 5000);
+        // 20 fps asked for; timers on a loaded machine run late, never early.
+        QVERIFY2(timeline.achievedFps() > 8.0 && timeline.achievedFps() < 22.0,
+                 qPrintable(QString::number(timeline.achievedFps())));
+        auto* label = timeline.findChild<QLabel*>(QStringLiteral("achievedFpsLabel"));
+        QCOMPARE(label->text(), QStringLiteral("%1 fps").arg(timeline.achievedFps(), 0, 'f', 1));
+    }
+
+    void renderOutputFramesAreMarked() {
+        TimelineWidget timeline;
+        timeline.setFrameRange(1, 8);
+        timeline.setRenderOutputFrames({1, 2, 3});
+        QCOMPARE(timeline.renderOutputFrames(), (QList<int>{1, 2, 3}));
     }
 
     void playbackFollowsARunningBake() {

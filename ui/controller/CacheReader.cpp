@@ -1,6 +1,7 @@
 #include "controller/CacheReader.h"
 
 #include "core/Error.h"
+#include "post/PostStore.h"
 #include "scene/SceneJson.h"
 
 #include <utility>
@@ -51,6 +52,18 @@ FrameData CacheReader::read(int frame) {
 
 std::vector<int> CacheReader::frames() const {
     return cache_ ? cache_->frames() : std::vector<int>{};
+}
+
+std::vector<int> CacheReader::renderOutputFrames() const {
+    if (!cache_)
+        return {};
+    std::string damage;
+    const PostStore outputs = PostStore::openOrEmpty(directory_, damage);
+    std::vector<int> made;
+    for (const CacheFrameEntry& entry : cache_->manifest().frames)
+        if (outputs.isListedFrom(entry.frame, entry.crc32))
+            made.push_back(entry.frame);
+    return made;
 }
 
 std::vector<int> CacheReader::takeChangedFrames() {

@@ -31,6 +31,9 @@ public:
 
     //! The frames the manifest lists, as last read.
     std::vector<int> frames() const;
+    //! The cached frames whose render outputs (post/) were made from them as they are now;
+    //! none when no post run finished a frame or its list is damaged.
+    std::vector<int> renderOutputFrames() const;
     //! Frames whose file changed or disappeared at a manifest re-read since the last call; data
     //! loaded for them before is stale.
     std::vector<int> takeChangedFrames();

@@ -73,6 +73,11 @@ void FrameLoader::deliverListing(int generation, const QList<int>& frames) {
         Q_EMIT framesListed(frames);
 }
 
+void FrameLoader::deliverOutputListing(int generation, const QList<int>& frames) {
+    if (generation == generation_)
+        Q_EMIT renderOutputsListed(frames);
+}
+
 bool FrameLoader::answersLatestRequest(int frame, int generation) {
     if (generation != generation_ || latestRequest_ != frame)
         return false;
@@ -101,10 +106,12 @@ void FrameLoader::perform(const LoadWork& work) {
         loaderGeneration_ = work.generation;
         reader_.open(*work.directory);
         publishListing(true);
+        publishOutputListing();
     }
     if (work.refresh) {
         reader_.reload();
         publishListing(true);
+        publishOutputListing();
     }
     if (work.frame)
         load(*work.frame);
@@ -147,6 +154,17 @@ void FrameLoader::publishListing(bool always) {
     listed_ = frames;
     const QList<int> list(frames.begin(), frames.end());
     post([this, generation = loaderGeneration_, list] { deliverListing(generation, list); });
+}
+
+void FrameLoader::publishOutputListing() {
+    std::vector<int> frames;
+    try {
+        frames = reader_.renderOutputFrames();
+    } catch (const std::exception&) {
+        // An unreadable render output list marks nothing; the outputs' own loader says why.
+    }
+    const QList<int> list(frames.begin(), frames.end());
+    post([this, generation = loaderGeneration_, list] { deliverOutputListing(generation, list); });
 }
 
 void FrameLoader::keep(int frame, const std::shared_ptr<const FrameData>& data) {

@@ -58,12 +58,16 @@ Q_SIGNALS:
     //! The frames the cache lists, ascending; sent after opening a folder, after refresh(), and
     //! whenever a load found the list changed.
     void framesListed(const QList<int>& frames);
+    //! The cached frames with render outputs made from them as they are now, ascending; sent
+    //! after opening a folder and after refresh() (call it when a post run made outputs).
+    void renderOutputsListed(const QList<int>& frames);
 
 private:
     // GUI thread.
     void deliverFrame(int frame, int generation, const std::shared_ptr<const FrameData>& data);
     void deliverFailure(int frame, int generation, const QString& message);
     void deliverListing(int generation, const QList<int>& frames);
+    void deliverOutputListing(int generation, const QList<int>& frames);
     //! True (once) when a result for `frame` answers the newest request of the current folder.
     bool answersLatestRequest(int frame, int generation);
     //! Calls `action` on the GUI thread.
@@ -75,6 +79,8 @@ private:
     void load(int frame);
     //! Drops stale frames from memory and tells the GUI when the list changed (or `always`).
     void publishListing(bool always);
+    //! Tells the GUI which cached frames have render outputs.
+    void publishOutputListing();
     void keep(int frame, const std::shared_ptr<const FrameData>& data);
 
     // GUI thread only.

@@ -12,6 +12,9 @@ namespace {
 //! Free space left and right of the range, so the end frames' handle and labels fit.
 constexpr double kMargin = 12.0;
 constexpr int kStripHeight = 5;
+constexpr int kOutputStripHeight = 3;
+const QColor kCachedColor(76, 175, 80);
+const QColor kOutputColor(33, 150, 243);
 constexpr double kMinorTickSpacing = 6.0;
 constexpr double kLabelSpacing = 48.0;
 
@@ -20,7 +23,8 @@ constexpr double kLabelSpacing = 48.0;
 FrameRuler::FrameRuler(QWidget* parent) : QWidget(parent) {
     setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
     setCursor(Qt::PointingHandCursor);
-    setToolTip(tr("Click or drag to go to a frame; the green strip marks cached frames"));
+    setToolTip(tr("Click or drag to go to a frame; the green strip marks cached frames, the blue "
+                  "one above it frames with render outputs"));
 }
 
 void FrameRuler::setFrameRange(int first, int last) {
@@ -31,6 +35,11 @@ void FrameRuler::setFrameRange(int first, int last) {
 
 void FrameRuler::setCachedFrames(std::vector<int> frames) {
     cached_ = std::move(frames);
+    update();
+}
+
+void FrameRuler::setOutputFrames(std::vector<int> frames) {
+    outputs_ = std::move(frames);
     update();
 }
 
@@ -60,7 +69,7 @@ QSize FrameRuler::sizeHint() const {
 }
 
 QSize FrameRuler::minimumSizeHint() const {
-    return {120, fontMetrics().height() + 16 + kStripHeight};
+    return {120, fontMetrics().height() + 16 + kStripHeight + kOutputStripHeight};
 }
 
 int FrameRuler::tickStep(double spacing) const {
@@ -74,7 +83,9 @@ int FrameRuler::tickStep(double spacing) const {
 void FrameRuler::paintEvent(QPaintEvent*) {
     QPainter painter(this);
     painter.fillRect(rect(), palette().color(QPalette::Base));
-    paintCachedStrip(painter);
+    const double cachedTop = height() - kStripHeight;
+    paintStrip(painter, cached_, cachedTop, kStripHeight, kCachedColor);
+    paintStrip(painter, outputs_, cachedTop - kOutputStripHeight, kOutputStripHeight, kOutputColor);
     paintTicks(painter);
     paintHandle(painter);
 }
@@ -82,7 +93,7 @@ void FrameRuler::paintEvent(QPaintEvent*) {
 void FrameRuler::paintTicks(QPainter& painter) const {
     const int minor = tickStep(kMinorTickSpacing);
     const int labelled = std::max(minor, tickStep(kLabelSpacing));
-    const int baseline = height() - kStripHeight - 1;
+    const int baseline = height() - kStripHeight - kOutputStripHeight - 1;
     const int labelHeight = fontMetrics().height();
     painter.setPen(palette().color(QPalette::Text));
     // Ticks sit on multiples of the step (frame 10, 20, …) plus the first frame itself.
@@ -96,21 +107,20 @@ void FrameRuler::paintTicks(QPainter& painter) const {
     }
 }
 
-void FrameRuler::paintCachedStrip(QPainter& painter) const {
+void FrameRuler::paintStrip(QPainter& painter, const std::vector<int>& frames, double top,
+                            double height, const QColor& color) const {
     const double halfFrame = std::max(1.0, pixelsPerFrame() / 2.0);
-    const QColor cachedColor(76, 175, 80);
-    const double top = height() - kStripHeight;
     // One rectangle per run of consecutive frames, so a long cache is a few rectangles.
-    for (std::size_t runStart = 0; runStart < cached_.size();) {
+    for (std::size_t runStart = 0; runStart < frames.size();) {
         std::size_t runEnd = runStart;
-        while (runEnd + 1 < cached_.size() && cached_[runEnd + 1] == cached_[runEnd] + 1)
+        while (runEnd + 1 < frames.size() && frames[runEnd + 1] == frames[runEnd] + 1)
             ++runEnd;
-        const int from = std::max(cached_[runStart], first_);
-        const int to = std::min(cached_[runEnd], last_);
+        const int from = std::max(frames[runStart], first_);
+        const int to = std::min(frames[runEnd], last_);
         if (from <= to)
-            painter.fillRect(QRectF(xOf(from) - halfFrame, top, xOf(to) - xOf(from) + 2 * halfFrame,
-                                    kStripHeight),
-                             cachedColor);
+            painter.fillRect(
+                QRectF(xOf(from) - halfFrame, top, xOf(to) - xOf(from) + 2 * halfFrame, height),
+                color);
         runStart = runEnd + 1;
     }
 }

@@ -1,6 +1,7 @@
 #pragma once
-// The timeline's ruler: frame ticks with numbers, a strip under the frames that are cached, and
-// the current-frame handle. Clicking or dragging on it scrubs.
+// The timeline's ruler: frame ticks with numbers, a green strip under the frames that are cached,
+// a blue one above it under the frames that have render outputs, and the current-frame handle.
+// Clicking or dragging on it scrubs.
 #include <QWidget>
 #include <vector>
 
@@ -16,6 +17,8 @@ public:
     void setFrameRange(int first, int last);
     //! Frames marked as cached, ascending.
     void setCachedFrames(std::vector<int> frames);
+    //! Frames marked as having render outputs, ascending.
+    void setOutputFrames(std::vector<int> frames);
     //! Where the handle is drawn.
     void setCurrentFrame(int frame);
 
@@ -39,7 +42,9 @@ protected:
 
 private:
     void paintTicks(QPainter& painter) const;
-    void paintCachedStrip(QPainter& painter) const;
+    //! One rectangle per run of consecutive `frames`, `height` px high from `top`.
+    void paintStrip(QPainter& painter, const std::vector<int>& frames, double top, double height,
+                    const QColor& color) const;
     void paintHandle(QPainter& painter) const;
     double pixelsPerFrame() const;
     //! The smallest of 1, 2, 5, 10, 20, 50, … frames whose ticks are at least `spacing` px apart.
@@ -49,6 +54,7 @@ private:
     int last_ = 1;
     int current_ = 1;
     std::vector<int> cached_;
+    std::vector<int> outputs_;
 };
 
 } // namespace airtrap

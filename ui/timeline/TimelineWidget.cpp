@@ -2,7 +2,9 @@
 
 #include "timeline/FrameRuler.h"
 
+#include <QComboBox>
 #include <QHBoxLayout>
+#include <QLabel>
 #include <QSignalBlocker>
 #include <QSpinBox>
 #include <QStyle>
@@ -13,12 +15,23 @@
 
 namespace airtrap {
 
+namespace {
+
+//! At EveryFrame, a frame the viewport never reports shown (a failed load) holds playback this
+//! long at most.
+constexpr int kDisplayWaitMs = 500;
+//! The achieved rate is measured over the frames shown in this last stretch of time.
+constexpr qint64 kRateWindowMs = 1000;
+
+} // namespace
+
 TimelineWidget::TimelineWidget(QWidget* parent) : QWidget(parent) {
     playTimer_ = new QTimer(this);
     playTimer_->setTimerType(Qt::PreciseTimer);
     connect(playTimer_, &QTimer::timeout, this, &TimelineWidget::advancePlayback);
-    setFps(fps_);
+    clock_.start();
     createControls();
+    setFps(fps_);
 }
 
 QToolButton* TimelineWidget::makeButton(const char* objectName, const QString& toolTip) {
@@ -46,10 +59,17 @@ void TimelineWidget::createControls() {
     QToolButton* last = makeButton("lastButton", tr("Newest cached frame (End)"));
     last->setIcon(style()->standardIcon(QStyle::SP_MediaSkipForward));
     connect(last, &QToolButton::clicked, this, &TimelineWidget::goToLast);
-    loopButton_ = makeButton("loopButton", tr("Loop playback"));
+    loopButton_ = makeButton("loopButton", QString());
     loopButton_->setText(tr("Loop"));
+    loopButton_->setIcon(style()->standardIcon(QStyle::SP_BrowserReload));
+    loopButton_->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
     loopButton_->setCheckable(true);
+    // A raised frame only while on: a flat checked tool button looks the same as an unchecked one
+    // in several styles.
+    loopButton_->setAutoRaise(false);
     connect(loopButton_, &QToolButton::toggled, this, &TimelineWidget::setLoop);
+    showLoop();
+    createRateChoice();
 
     ruler_ = new FrameRuler(this);
     ruler_->setObjectName(QStringLiteral("frameRuler"));
@@ -66,9 +86,30 @@ void TimelineWidget::createControls() {
     layout->setContentsMargins(4, 2, 4, 2);
     for (QToolButton* button : {first, back, playButton_, forward, last, loopButton_})
         layout->addWidget(button);
+    layout->addWidget(rateChoice_);
     layout->addWidget(ruler_, 1);
+    layout->addWidget(fpsLabel_);
     layout->addWidget(frameSpinBox_);
     showPlaying();
+}
+
+void TimelineWidget::createRateChoice() {
+    rateChoice_ = new QComboBox(this);
+    rateChoice_->setObjectName(QStringLiteral("playbackRateChoice"));
+    rateChoice_->setToolTip(tr("Play in real time at the scene's frame rate (skipping frames that "
+                               "cannot be shown in time), or show every frame as fast as the "
+                               "viewport draws them"));
+    rateChoice_->setFocusPolicy(Qt::NoFocus);
+    rateChoice_->addItem(QString(), QVariant::fromValue(PlaybackRate::SceneFps));
+    rateChoice_->addItem(tr("Every frame"), QVariant::fromValue(PlaybackRate::EveryFrame));
+    connect(rateChoice_, &QComboBox::activated, this, [this](int index) {
+        setPlaybackRate(rateChoice_->itemData(index).value<PlaybackRate>());
+    });
+    fpsLabel_ = new QLabel(this);
+    fpsLabel_->setObjectName(QStringLiteral("achievedFpsLabel"));
+    fpsLabel_->setToolTip(tr("Frames shown per second during the last second of playback"));
+    fpsLabel_->setMinimumWidth(fpsLabel_->fontMetrics().horizontalAdvance(tr("000.0 fps")));
+    fpsLabel_->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
 }
 
 QList<int> TimelineWidget::cachedFrames() const {
@@ -100,11 +141,57 @@ void TimelineWidget::addCachedFrame(int frame) {
         showCachedFrames();
 }
 
+void TimelineWidget::setRenderOutputFrames(const QList<int>& frames) {
+    outputs_ = frames;
+    ruler_->setOutputFrames(std::vector<int>(frames.begin(), frames.end()));
+}
+
 void TimelineWidget::setFps(double fps) {
     if (!(fps > 0.0))
         return;
     fps_ = fps;
-    playTimer_->setInterval(std::max(1, int(std::lround(1000.0 / fps))));
+    rateChoice_->setItemText(0, tr("%1 fps").arg(fps));
+    applyTimerInterval();
+}
+
+void TimelineWidget::setPlaybackRate(PlaybackRate rate) {
+    rate_ = rate;
+    rateChoice_->setCurrentIndex(rate == PlaybackRate::SceneFps ? 0 : 1);
+    awaitingDisplay_ = false;
+    applyTimerInterval();
+}
+
+void TimelineWidget::applyTimerInterval() {
+    // At EveryFrame the viewport's report drives playback; the timer only ends a wait for a
+    // frame that never shows.
+    playTimer_->setInterval(rate_ == PlaybackRate::EveryFrame
+                                ? kDisplayWaitMs
+                                : std::max(1, int(std::lround(1000.0 / fps_))));
+}
+
+void TimelineWidget::frameDisplayed(int frame) {
+    if (!isPlaying() || frame != current_)
+        return;
+    const qint64 now = clock_.elapsed();
+    shownAt_.push_back(now);
+    while (now - shownAt_.front() > kRateWindowMs)
+        shownAt_.pop_front();
+    if (shownAt_.size() >= 2)
+        achievedFps_ = double(shownAt_.size() - 1) * 1000.0 /
+                       double(std::max<qint64>(1, shownAt_.back() - shownAt_.front()));
+    showAchievedFps();
+    if (rate_ == PlaybackRate::EveryFrame && awaitingDisplay_) {
+        awaitingDisplay_ = false;
+        // After this event: the viewport paints the frame before the next is asked for.
+        QTimer::singleShot(0, this, [this] {
+            if (isPlaying() && !awaitingDisplay_)
+                advancePlayback();
+        });
+    }
+}
+
+void TimelineWidget::showAchievedFps() {
+    fpsLabel_->setText(achievedFps_ > 0.0 ? tr("%1 fps").arg(achievedFps_, 0, 'f', 1) : QString());
 }
 
 void TimelineWidget::setBakeRunning(bool running) {
@@ -135,7 +222,16 @@ void TimelineWidget::play() {
             return;
         setCurrentFrame(*firstCached);
     }
+    shownAt_.clear();
+    achievedFps_ = 0.0;
+    showAchievedFps();
+    awaitingDisplay_ = false;
     playTimer_->start();
+    if (rate_ == PlaybackRate::EveryFrame)
+        QTimer::singleShot(0, this, [this] {
+            if (isPlaying() && !awaitingDisplay_)
+                advancePlayback();
+        });
     showPlaying();
     Q_EMIT playingChanged(true);
 }
@@ -159,6 +255,13 @@ void TimelineWidget::setLoop(bool loop) {
     loop_ = loop;
     const QSignalBlocker blocker(loopButton_);
     loopButton_->setChecked(loop);
+    showLoop();
+}
+
+void TimelineWidget::showLoop() {
+    loopButton_->setToolTip(loop_ ? tr("Loop playback: on (at the newest cached frame it starts "
+                                       "again from the first)")
+                                  : tr("Loop playback: off (it stops at the newest cached frame)"));
 }
 
 void TimelineWidget::stepForward() {
@@ -179,15 +282,22 @@ void TimelineWidget::goToLast() {
 
 void TimelineWidget::advancePlayback() {
     if (const std::optional<int> next = cachedFrameAfter(current_)) {
-        setCurrentFrame(*next);
+        playTo(*next);
         return;
     }
     const std::optional<int> firstCached = firstCachedFrame();
     if (loop_ && firstCached && *firstCached != current_)
-        setCurrentFrame(*firstCached);
+        playTo(*firstCached);
     else if (!bakeRunning_)
         pause();
     // Otherwise the bake's next frame is on its way: keep ticking until it arrives.
+}
+
+void TimelineWidget::playTo(int frame) {
+    awaitingDisplay_ = rate_ == PlaybackRate::EveryFrame;
+    if (awaitingDisplay_)
+        playTimer_->start(); // the wait for this frame starts now
+    setCurrentFrame(frame);
 }
 
 std::optional<int> TimelineWidget::cachedFrameAfter(int frame) const {

@@ -1,13 +1,19 @@
 #pragma once
 // The editor's timeline: transport buttons, the frame ruler and a frame spin box. Playback runs
-// at the scene's frame rate over cached frames only: it skips frames that are not baked, and at
-// the newest cached frame it loops, stops, or — while a bake is running — waits for the next.
-// Keyboard shortcuts belong to the main window, which calls the slots below.
+// over cached frames only: it skips frames that are not baked, and at the newest cached frame it
+// loops, stops, or — while a bake is running — waits for the next. It runs at the scene's frame
+// rate (frames that cannot be shown in time are skipped, as a player does) or shows every frame
+// as fast as the viewport draws them; the rate it achieves is shown beside the ruler. Keyboard
+// shortcuts belong to the main window, which calls the slots below.
+#include <QElapsedTimer>
 #include <QList>
 #include <QWidget>
+#include <deque>
 #include <optional>
 #include <set>
 
+class QComboBox;
+class QLabel;
 class QSpinBox;
 class QTimer;
 class QToolButton;
@@ -34,8 +40,19 @@ public:
     bool isPlaying() const;
     //! True when playback loops.
     bool loops() const { return loop_; }
-    //! The playback rate, frames per second.
+    //! The scene's frame rate, frames per second.
     double fps() const { return fps_; }
+
+    enum class PlaybackRate {
+        SceneFps,   //!< real time: a frame every 1/fps s, late frames skipped
+        EveryFrame, //!< the next frame once the viewport has shown the current one
+    };
+    Q_ENUM(PlaybackRate)
+    PlaybackRate playbackRate() const { return rate_; }
+    //! Frames shown per second over the last second of playback; 0 before two were shown.
+    double achievedFps() const { return achievedFps_; }
+    //! Frames marked as having render outputs, ascending.
+    QList<int> renderOutputFrames() const { return outputs_; }
 
 public Q_SLOTS:
     //! The scene's frames, `first` to `last` (a `last` below `first` is raised to it); the
@@ -45,8 +62,14 @@ public Q_SLOTS:
     void setCachedFrames(const QList<int>& frames);
     //! Marks one more frame as cached (a bake just finished it).
     void addCachedFrame(int frame);
-    //! Playback rate in frames per second (the scene's fps); non-positive values are ignored.
+    //! Replaces the frames marked as having render outputs (post results).
+    void setRenderOutputFrames(const QList<int>& frames);
+    //! The scene's frame rate; non-positive values are ignored.
     void setFps(double fps);
+    void setPlaybackRate(airtrap::TimelineWidget::PlaybackRate rate);
+    //! The viewport shows `frame` now: measures the achieved rate, and lets playback at
+    //! EveryFrame go on.
+    void frameDisplayed(int frame);
     //! While true, playback that reaches the newest cached frame waits for the next one instead
     //! of stopping. Connect it to the bake's state.
     void setBakeRunning(bool running);
@@ -80,6 +103,12 @@ private:
     void createControls();
     QToolButton* makeButton(const char* objectName, const QString& toolTip);
     void advancePlayback();
+    //! Playback moves to `frame` and, at EveryFrame, waits for the viewport to show it.
+    void playTo(int frame);
+    void createRateChoice();
+    void applyTimerInterval();
+    void showAchievedFps();
+    void showLoop();
     //! The first cached frame after `frame` within the range.
     std::optional<int> cachedFrameAfter(int frame) const;
     std::optional<int> firstCachedFrame() const;
@@ -94,11 +123,20 @@ private:
     bool loop_ = false;
     bool bakeRunning_ = false;
     std::set<int> cached_;
+    QList<int> outputs_;
+    PlaybackRate rate_ = PlaybackRate::SceneFps;
+    //! Playback at EveryFrame asked for a frame the viewport has not shown yet.
+    bool awaitingDisplay_ = false;
+    QElapsedTimer clock_;
+    std::deque<qint64> shownAt_; //!< ms on clock_ of the frames shown in the last second
+    double achievedFps_ = 0.0;
 
     FrameRuler* ruler_ = nullptr;
     QSpinBox* frameSpinBox_ = nullptr;
     QToolButton* playButton_ = nullptr;
     QToolButton* loopButton_ = nullptr;
+    QComboBox* rateChoice_ = nullptr;
+    QLabel* fpsLabel_ = nullptr;
     QTimer* playTimer_ = nullptr;
 };
 

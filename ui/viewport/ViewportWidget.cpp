@@ -298,13 +298,15 @@ void ViewportWidget::paintGL() {
     gl->glClearStencil(0);
     gl->glStencilMask(0xFF);
     gl->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-    if (!hasScene_ && !isPlayback()) {
-        return;
+    if (hasScene_ || isPlayback()) {
+        drawScene();
     }
-    drawScene();
     // The legend explains the water's colours: without water it explains nothing.
     if (isPlayback() && drawsParticles()) {
         paintLegend();
+    }
+    if (!notice_.isEmpty()) {
+        paintNotice();
     }
 }
 
@@ -371,6 +373,32 @@ void ViewportWidget::paintLegend() {
     // QPainter draws with the same context: it sets up the state it needs itself.
     QPainter painter(this);
     legend_.paint(painter, rect(), particles_.effectiveSpeedScale());
+}
+
+void ViewportWidget::setNotice(const QString& text) {
+    if (text == notice_) {
+        return;
+    }
+    notice_ = text;
+    update();
+}
+
+void ViewportWidget::paintNotice() {
+    QPainter painter(this);
+    painter.setRenderHint(QPainter::Antialiasing);
+    QFont font = painter.font();
+    font.setPointSizeF(font.pointSizeF() * 1.2);
+    painter.setFont(font);
+    const QFontMetrics metrics(font);
+    const int padding = metrics.height() / 2;
+    QRect box =
+        metrics.boundingRect(notice_).adjusted(-padding, -padding / 2, padding, padding / 2);
+    box.moveCenter(QPoint(width() / 2, metrics.height() + padding));
+    painter.setPen(Qt::NoPen);
+    painter.setBrush(QColor(0, 0, 0, 150));
+    painter.drawRoundedRect(box, padding / 2.0, padding / 2.0);
+    painter.setPen(Qt::white);
+    painter.drawText(box, Qt::AlignCenter, notice_);
 }
 
 // --- Navigation and picking ----------------------------------------------------------------------

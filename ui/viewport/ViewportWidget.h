@@ -58,6 +58,8 @@ public:
     bool isPlayback() const { return frame_ != nullptr; }
     //! The highlighted item.
     const SceneItem& selection() const { return selection_; }
+    //! The line shown over the view ("Frame 40 is not baked yet"); empty when none.
+    const QString& notice() const { return notice_; }
     //! Radius the particles are drawn with, in metres.
     float particleRadius() const;
     //! The smallest and largest particle size factor (setParticleSize()).
@@ -97,6 +99,8 @@ public Q_SLOTS:
     //! Playback: draws the frame's particles instead of the fluid blocks, its bubbles, and the
     //! bodies where the frame has them; null returns to editing.
     void setFrame(std::shared_ptr<const airtrap::FrameData> frame);
+    //! A line shown at the top of the view until replaced; empty removes it.
+    void setNotice(const QString& text);
     //! Aims the camera at the simulation domain (container plus headroom) and fits it in view.
     void frameAll();
     //! Turns the camera to `view` and frames the domain.
@@ -165,6 +169,7 @@ private:
     //! bubbles show through the water.
     void drawSolids(const RenderContext& context);
     void paintLegend();
+    void paintNotice();
     float aspectRatio() const;
     void updateParticleLook();
     //! The user moved the camera: stop refitting it on resize.
@@ -181,6 +186,7 @@ private:
     SubgridBubbleDrawable subgridBubbles_;
     SurfaceDrawable surface_;
     SpeedLegend legend_;
+    QString notice_;
 
     SceneGizmos gizmos_;
     SceneBodies bodies_;

@@ -103,9 +103,12 @@ void MainWindow::createParts() {
                 viewport_->setSubgridBubbles(results.subgridBubbles);
                 Q_EMIT frameShown(frame);
             });
-    // New meshes for the frame on screen: show them.
-    connect(renderSession_, &RenderSession::outputsChanged, this,
-            [this] { onTimelineFrameChanged(timeline_->currentFrame()); });
+    // New meshes for the frame on screen: show them, and mark their frames on the timeline.
+    connect(renderSession_, &RenderSession::outputsChanged, this, [this] {
+        onTimelineFrameChanged(timeline_->currentFrame());
+        loader_->refresh();
+    });
+    connect(this, &MainWindow::frameShown, timeline_, &TimelineWidget::frameDisplayed);
 }
 
 QDockWidget* MainWindow::addDock(QWidget* content, const QString& title, const char* objectName,
@@ -284,6 +287,8 @@ void MainWindow::connectPlayback() {
     connect(timeline_, &TimelineWidget::currentFrameChanged, this,
             &MainWindow::onTimelineFrameChanged);
     connect(loader_, &FrameLoader::frameLoaded, this, &MainWindow::onFrameLoaded);
+    connect(loader_, &FrameLoader::renderOutputsListed, timeline_,
+            &TimelineWidget::setRenderOutputFrames);
     connect(loader_, &FrameLoader::loadFailed, this, [this](int, const QString& message) {
         log_->error(message);
         statusBar()->showMessage(message, 10000);
@@ -501,9 +506,14 @@ void MainWindow::showFrame(int frame) {
 
 void MainWindow::onTimelineFrameChanged(int frame) {
     if (bakeSession_->isCached(frame)) {
+        viewport_->setNotice(QString());
         loader_->request(frame);
         return;
     }
+    // The scene's first frame with nothing baked is plain editing; any other frame says why the
+    // viewport shows the setup instead of water in motion.
+    const bool editing = frame == timeline_->firstFrame() && bakeSession_->lastCachedFrame() == 0;
+    viewport_->setNotice(editing ? QString() : tr("Frame %1 is not baked yet").arg(frame));
     viewport_->setFrame(nullptr);
     viewport_->setWaterSurface(nullptr);
     viewport_->setSubgridBubbles({});
