@@ -170,6 +170,62 @@ private Q_SLOTS:
         QCOMPARE_LT(QLineF(after - before, QPointF(40.0, -25.0)).length(), 0.5);
     }
 
+    // --- Orthographic --------------------------------------------------------------------------
+
+    void orthographicKeepsTheScaleAtTheTarget() {
+        OrbitCamera camera;
+        camera.fit(Aabb{Vec3d(0, 0, 0), Vec3d(2, 1, 1)}, aspect());
+        const QVector3D aside = camera.target() + camera.right() * 0.3f + camera.up() * 0.2f;
+        const QPointF inPerspective = camera.project(aside, kViewport);
+        camera.setOrthographic(true);
+        QVERIFY(camera.isOrthographic());
+        QCOMPARE_LT(QLineF(camera.project(aside, kViewport), inPerspective).length(), 1e-2);
+        // Parallel: a point further away along the view lands on the same pixel.
+        const QPointF deeper = camera.project(aside + camera.forward() * 0.8f, kViewport);
+        QCOMPARE_LT(QLineF(deeper, inPerspective).length(), 1e-2);
+        QCOMPARE(camera.metresPerPixel(0.1f, kViewport), camera.metresPerPixel(9.0f, kViewport));
+    }
+
+    void orthographicRaysAreParallelAndAgreeWithProjection() {
+        OrbitCamera camera;
+        camera.setOrthographic(true);
+        camera.fit(Aabb{Vec3d(0, 0, 0), Vec3d(2, 1, 1)}, aspect());
+        const Ray a = camera.ray(QPointF(100.0, 400.0), kViewport);
+        const Ray b = camera.ray(QPointF(600.0, 20.0), kViewport);
+        QVERIFY(near(a.direction, camera.forward()) && near(b.direction, camera.forward()));
+        // The ray starts behind the eye: whatever the view draws, it can pick.
+        QVERIFY(QVector3D::dotProduct(a.origin - camera.eye(), camera.forward()) < 0.0f);
+        const QPointF back = camera.project(a.at(camera.distance() * 3.0f), kViewport);
+        QCOMPARE_LT(QLineF(QPointF(100.0, 400.0), back).length(), 1e-2);
+    }
+
+    void orthographicFitShowsTheWholeBox() {
+        const Aabb box{Vec3d(0.0, 0.0, 0.0), Vec3d(2.5, 2.5, 0.4)};
+        OrbitCamera camera;
+        camera.setOrthographic(true);
+        camera.setAngles(0.0f, 0.0f);
+        camera.fit(box, aspect());
+        const QMatrix4x4 clip = camera.projectionMatrix(aspect()) * camera.viewMatrix();
+        float largest = 0.0f;
+        for (const QVector3D& corner : cornersOf(box)) {
+            const QVector3D ndc = (clip * QVector4D(corner, 1.0f)).toVector3DAffine();
+            QVERIFY(std::abs(ndc.x()) <= 1.0f && std::abs(ndc.y()) <= 1.0f);
+            QVERIFY(std::abs(ndc.z()) <= 1.0f);
+            largest = std::max({largest, std::abs(ndc.x()), std::abs(ndc.y())});
+        }
+        QVERIFY2(largest > 0.8f, qPrintable(QString::number(largest)));
+    }
+
+    void orthographicZoomTowardTheCursorKeepsThePointUnderIt() {
+        OrbitCamera camera;
+        camera.setOrthographic(true);
+        camera.fit(Aabb{Vec3d(0, 0, 0), Vec3d(2, 2, 2)}, aspect());
+        const QPointF cursor(500.0, 120.0);
+        const QVector3D anchor = camera.ray(cursor, kViewport).at(camera.distance() * 2.0f);
+        camera.zoomToward(cursor, kViewport, 0.6f);
+        QCOMPARE_LT(QLineF(camera.project(anchor, kViewport), cursor).length(), 1e-2);
+    }
+
     void rayHitsBoxesItPointsAt() {
         const Ray ray{QVector3D(0, 0, 5), QVector3D(0, 0, -1)};
         const std::optional<float> hit = ray.hitBox(QVector3D(-1, -1, -1), QVector3D(1, 1, 1));

@@ -252,10 +252,15 @@ void TimelineWidget::togglePlayback() {
 }
 
 void TimelineWidget::setLoop(bool loop) {
+    const bool changed = loop != loop_;
     loop_ = loop;
-    const QSignalBlocker blocker(loopButton_);
-    loopButton_->setChecked(loop);
+    {
+        const QSignalBlocker blocker(loopButton_);
+        loopButton_->setChecked(loop);
+    }
     showLoop();
+    if (changed)
+        Q_EMIT loopChanged(loop);
 }
 
 void TimelineWidget::showLoop() {

@@ -98,6 +98,8 @@ Q_SIGNALS:
     void currentFrameChanged(int frame);
     //! Playback started or stopped.
     void playingChanged(bool playing);
+    //! Looping was switched on or off (by the Loop button or setLoop()).
+    void loopChanged(bool loop);
 
 private:
     void createControls();

@@ -12,6 +12,8 @@ constexpr float kContainerOpacity = 0.85f;
 constexpr float kHeadroomOpacity = 0.3f;
 constexpr float kBoxWidth = 1.5f;
 constexpr float kHighlightWidth = 3.0f;
+//! An emitter's arrowhead: its length and half-width as a share of the arrow's length.
+constexpr float kArrowHeadShare = 0.25f;
 
 } // namespace
 
@@ -44,6 +46,26 @@ void BoxGizmoDrawable::addBox(std::vector<LineVertex>& vertices, const QVector3D
     }
 }
 
+void BoxGizmoDrawable::addEmitter(std::vector<LineVertex>& vertices, const GizmoBox& box,
+                                  const QColor& colour) {
+    const auto segment = [&](const QVector3D& a, const QVector3D& b) {
+        vertices.push_back(LineVertex::at(a, colour, 1.0f));
+        vertices.push_back(LineVertex::at(b, colour, 1.0f));
+    };
+    for (std::size_t k = 0; k < box.outline.size(); ++k)
+        segment(box.outline[k], box.outline[(k + 1) % box.outline.size()]);
+    // The jet's arrow, its head in the plane of the jet and the outline's first point.
+    const QVector3D tip = box.centre + box.jet;
+    segment(box.centre, tip);
+    if (box.outline.empty())
+        return;
+    const QVector3D across =
+        (box.outline.front() - box.centre).normalized() * (kArrowHeadShare * box.jet.length());
+    const QVector3D back = box.jet * kArrowHeadShare;
+    segment(tip, tip - back + across);
+    segment(tip, tip - back - across);
+}
+
 void BoxGizmoDrawable::addGizmo(std::vector<LineVertex>& vertices, const GizmoBox& box,
                                 bool selected) const {
     switch (box.kind) {
@@ -65,7 +87,7 @@ void BoxGizmoDrawable::addGizmo(std::vector<LineVertex>& vertices, const GizmoBo
         addBox(vertices, box.min, box.max, selected ? highlightColour() : kObstacleColour, 1.0f);
         break;
     case GizmoBox::Kind::Emitter:
-        addBox(vertices, box.min, box.max, selected ? highlightColour() : kEmitterColour, 1.0f);
+        addEmitter(vertices, box, selected ? highlightColour() : kEmitterColour);
         break;
     }
 }

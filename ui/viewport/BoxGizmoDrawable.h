@@ -1,6 +1,7 @@
 #pragma once
-// Wireframe boxes of the scene's gizmos: the container (its headroom faintly above the rim),
-// fluid blocks in blue, obstacles in grey. The selected gizmo is drawn thick, in orange, and on
+// Wireframe gizmos of the scene: the container (its headroom faintly above the rim), fluid
+// blocks in blue, obstacles in grey, emitters in green as their nozzle's disc or rectangle with an
+// arrow along the jet. The selected gizmo is drawn thick, in orange, and on
 // top of everything so that it stays visible inside the water.
 #include "document/SceneItem.h"
 #include "viewport/Drawable.h"
@@ -35,6 +36,9 @@ private:
     static void addBox(std::vector<LineVertex>& vertices, const QVector3D& min,
                        const QVector3D& max, const QColor& colour, float opacity);
     void addGizmo(std::vector<LineVertex>& vertices, const GizmoBox& box, bool selected) const;
+    //! The nozzle's outline and an arrow along its jet.
+    static void addEmitter(std::vector<LineVertex>& vertices, const GizmoBox& box,
+                           const QColor& colour);
 
     LineBatch boxes_;
     LineBatch highlight_;

@@ -65,7 +65,15 @@ float OrbitCamera::farPlane() const {
 
 QMatrix4x4 OrbitCamera::projectionMatrix(float aspectRatio) const {
     QMatrix4x4 projection;
-    projection.perspective(fieldOfView_, aspectRatio, nearPlane(), farPlane());
+    if (orthographic_) {
+        const float halfHeight = orthographicHalfHeight();
+        const float halfWidth = halfHeight * aspectRatio;
+        // Parallel rays need no eye in front of the scene: zoomed in, the eye may sit inside it,
+        // so the clip range reaches as far behind the eye as in front.
+        projection.ortho(-halfWidth, halfWidth, -halfHeight, halfHeight, -farPlane(), farPlane());
+    } else {
+        projection.perspective(fieldOfView_, aspectRatio, nearPlane(), farPlane());
+    }
     return projection;
 }
 
@@ -82,9 +90,24 @@ Ray OrbitCamera::ray(const QPointF& pixel, const QSize& size) const {
     const float ndcX = float(2.0 * pixel.x() / std::max(size.width(), 1) - 1.0);
     const float ndcY = float(1.0 - 2.0 * pixel.y() / std::max(size.height(), 1));
     const float spread = tanHalfFieldOfView();
+    if (orthographic_) {
+        const float halfHeight = orthographicHalfHeight();
+        const QVector3D onEyePlane =
+            eye() + right() * (ndcX * halfHeight * aspectOf(size)) + up() * (ndcY * halfHeight);
+        // Started behind the eye, as far as the clip range reaches: what is drawn can be picked.
+        return {onEyePlane - forward() * farPlane(), forward()};
+    }
     const QVector3D direction =
         forward() + right() * (ndcX * spread * aspectOf(size)) + up() * (ndcY * spread);
     return {eye(), direction.normalized()};
+}
+
+QVector3D OrbitCamera::targetPlanePoint(const QPointF& pixel, const QSize& size) const {
+    const Ray cursor = ray(pixel, size);
+    if (orthographic_)
+        return cursor.at(farPlane() + distance_);
+    const float cosine = QVector3D::dotProduct(cursor.direction, forward());
+    return cursor.at(distance_ / std::max(cosine, 1e-3f));
 }
 
 QPointF OrbitCamera::project(const QVector3D& point, const QSize& size) const {
@@ -93,7 +116,9 @@ QPointF OrbitCamera::project(const QVector3D& point, const QSize& size) const {
 }
 
 float OrbitCamera::metresPerPixel(float depth, const QSize& size) const {
-    return 2.0f * depth * tanHalfFieldOfView() / float(std::max(size.height(), 1));
+    const float halfHeight =
+        orthographic_ ? orthographicHalfHeight() : depth * tanHalfFieldOfView();
+    return 2.0f * halfHeight / float(std::max(size.height(), 1));
 }
 
 void OrbitCamera::fit(const Aabb& box, float aspectRatio) {
@@ -113,7 +138,8 @@ void OrbitCamera::fit(const Aabb& box, float aspectRatio) {
                            (i & 4 ? box.max : box.min).z());
         const QVector3D offset =
             QVector3D(float(corner.x()), float(corner.y()), float(corner.z())) - target_;
-        const float depth = QVector3D::dotProduct(offset, ahead);
+        // Orthographic: the view's half-height at the target is what must hold the corner.
+        const float depth = orthographic_ ? 0.0f : QVector3D::dotProduct(offset, ahead);
         needed = std::max(
             {needed, std::abs(QVector3D::dotProduct(offset, sideways)) / tanHorizontal - depth,
              std::abs(QVector3D::dotProduct(offset, upwards)) / tanVertical - depth});
@@ -136,10 +162,7 @@ void OrbitCamera::zoom(float factor) {
 }
 
 void OrbitCamera::zoomToward(const QPointF& pixel, const QSize& size, float factor) {
-    // The point under the cursor on the plane through the target, facing the eye.
-    const Ray cursor = ray(pixel, size);
-    const float cosine = QVector3D::dotProduct(cursor.direction, forward());
-    const QVector3D anchor = cursor.at(distance_ / std::max(cosine, 1e-3f));
+    const QVector3D anchor = targetPlanePoint(pixel, size);
     const float before = distance_;
     zoom(factor);
     // Scaling the whole eye-target-anchor picture about the eye's line keeps the anchor's pixel.

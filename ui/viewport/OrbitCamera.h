@@ -1,7 +1,9 @@
 #pragma once
 // A turntable camera, as in most 3D editors: it circles a target point at some distance, with
-// yaw about the world's up axis (y) and pitch above the horizon. Plain math, no OpenGL, so that
-// navigation and picking can be tested without a window. Pixels are widget pixels, y down.
+// yaw about the world's up axis (y) and pitch above the horizon. It projects in perspective or
+// orthographically; the orthographic view shows at the target what the perspective view shows
+// there, so switching keeps the picture's scale. Plain math, no OpenGL, so that navigation and
+// picking can be tested without a window. Pixels are widget pixels, y down.
 #include "core/Math.h"
 #include "viewport/Ray.h"
 
@@ -35,6 +37,10 @@ public:
     float fieldOfView() const { return fieldOfView_; }
     //! Sets the vertical field of view, clamped to [5, 120] degrees.
     void setFieldOfView(float degrees);
+
+    //! True when the view is orthographic: parallel rays, sizes independent of depth.
+    bool isOrthographic() const { return orthographic_; }
+    void setOrthographic(bool orthographic) { orthographic_ = orthographic; }
 
     //! Where the camera is.
     QVector3D eye() const { return target_ - forward() * distance_; }
@@ -76,12 +82,17 @@ public:
 private:
     static float aspectOf(const QSize& size);
     float tanHalfFieldOfView() const;
+    //! Half the height of the orthographic view: the perspective view's at the target.
+    float orthographicHalfHeight() const { return distance_ * tanHalfFieldOfView(); }
+    //! The point of the plane through the target, facing the eye, under `pixel`.
+    QVector3D targetPlanePoint(const QPointF& pixel, const QSize& size) const;
 
     QVector3D target_{0.0f, 0.0f, 0.0f};
     float distance_ = 5.0f;
     float yaw_ = 25.0f;
     float pitch_ = 20.0f;
     float fieldOfView_ = 40.0f;
+    bool orthographic_ = false;
     //! Radius of the last fitted box: the far plane must reach past it from any zoom.
     float sceneRadius_ = 2.0f;
 };

@@ -3,6 +3,9 @@
 #include "scene/InflowNozzle.h"
 #include "viewport/QtVectors.h"
 
+#include <cmath>
+#include <numbers>
+
 namespace airtrap {
 
 SceneGizmos::SceneGizmos(const Scene& scene) : headroom_(float(scene.container.headroom)) {
@@ -27,10 +30,36 @@ SceneGizmos::SceneGizmos(const Scene& scene) : headroom_(float(scene.container.h
         const Vec3d exit = InflowNozzle::exitHalfExtent(emitter);
         const Vec3d along = 0.25 * exit.maxCoeff() * emitter.direction.normalized().cwiseAbs();
         const Vec3d half = exit + along;
-        boxes_.push_back({GizmoBox::Kind::Emitter, SceneItem::elementItem("emitters", i),
-                          toQVector3D(emitter.position - half),
-                          toQVector3D(emitter.position + half)});
+        GizmoBox box{GizmoBox::Kind::Emitter, SceneItem::elementItem("emitters", i),
+                     toQVector3D(emitter.position - half), toQVector3D(emitter.position + half)};
+        box.outline = nozzleOutline(emitter);
+        box.centre = toQVector3D(emitter.position);
+        box.jet = toQVector3D(emitter.direction.normalized() * 2.0 * exit.maxCoeff());
+        boxes_.push_back(std::move(box));
     }
+}
+
+std::vector<QVector3D> SceneGizmos::nozzleOutline(const InflowEmitterSettings& emitter) {
+    Vec3d widthAxis;
+    Vec3d heightAxis;
+    InflowNozzle::nozzleFrame(emitter.direction, widthAxis, heightAxis);
+    std::vector<QVector3D> loop;
+    if (emitter.shape == "rectangle") {
+        const Vec3d w = 0.5 * emitter.width * widthAxis;
+        const Vec3d h = 0.5 * emitter.height * heightAxis;
+        const std::array<Vec3d, 4> corners{-w - h, w - h, w + h, -w + h};
+        for (const Vec3d& corner : corners)
+            loop.push_back(toQVector3D(emitter.position + corner));
+        return loop;
+    }
+    constexpr int kDiscSegments = 48;
+    for (int k = 0; k < kDiscSegments; ++k) {
+        const double angle = 2.0 * std::numbers::pi * k / kDiscSegments;
+        loop.push_back(
+            toQVector3D(emitter.position + emitter.radius * (std::cos(angle) * widthAxis +
+                                                             std::sin(angle) * heightAxis)));
+    }
+    return loop;
 }
 
 std::array<std::pair<QVector3D, QVector3D>, 12> SceneGizmos::edgesOf(const QVector3D& min,

@@ -43,6 +43,9 @@ public:
     static std::array<std::pair<QVector3D, QVector3D>, 12> edgesOf(const QVector3D& min,
                                                                    const QVector3D& max);
 
+    //! The exit of an emitter's nozzle: its disc or rectangle as a closed loop of points.
+    static std::vector<QVector3D> nozzleOutline(const InflowEmitterSettings& emitter);
+
 private:
     //! Distance along the ray at which it hits `box`, or a negative number when it misses.
     static float hitDistance(const GizmoBox& box, const Ray& ray, const PickOptions& options);

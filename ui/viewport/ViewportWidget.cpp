@@ -1,5 +1,6 @@
 #include "viewport/ViewportWidget.h"
 
+#include "viewport/QtVectors.h"
 #include "viewport/RenderContext.h"
 
 #include <QKeyEvent>
@@ -120,6 +121,7 @@ void ViewportWidget::setCameraView(CameraView view) {
     switch (view) {
     case CameraView::Perspective:
         camera_.setAngles(OrbitCamera().yaw(), OrbitCamera().pitch());
+        setOrthographic(false);
         break;
     case CameraView::Front:
         camera_.setAngles(0.0f, 0.0f);
@@ -132,6 +134,42 @@ void ViewportWidget::setCameraView(CameraView view) {
         break;
     }
     frameAll();
+}
+
+void ViewportWidget::setOrthographic(bool orthographic) {
+    if (orthographic == camera_.isOrthographic()) {
+        return;
+    }
+    camera_.setOrthographic(orthographic);
+    update();
+    Q_EMIT orthographicChanged(orthographic);
+}
+
+void ViewportWidget::frameSelected() {
+    const std::optional<Aabb> bounds = selectionBounds();
+    if (!bounds) {
+        frameAll();
+        return;
+    }
+    camera_.fit(*bounds, aspectRatio());
+    refitOnResize_ = false;
+    update();
+}
+
+std::optional<Aabb> ViewportWidget::selectionBounds() const {
+    for (const GizmoBox& box : gizmos_.boxes()) {
+        if (box.item == selection_) {
+            return Aabb{toVec3d(box.min), toVec3d(box.max)};
+        }
+    }
+    for (const SceneBodies::Body& body : bodies_.bodies()) {
+        if (body.item == selection_ && body.solid) {
+            const Vec3d centre = toVec3d(body.pose.map(QVector3D(0.0f, 0.0f, 0.0f)));
+            const Vec3d reach = Vec3d::Constant(body.boundingRadius);
+            return Aabb{centre - reach, centre + reach};
+        }
+    }
+    return std::nullopt;
 }
 
 bool ViewportWidget::drawsParticles() const {

@@ -105,6 +105,12 @@ public Q_SLOTS:
     void frameAll();
     //! Turns the camera to `view` and frames the domain.
     void setCameraView(CameraView view);
+    //! Parallel projection on or off; the picture keeps its scale at the camera's target.
+    void setOrthographic(bool orthographic);
+    bool isOrthographic() const { return camera_.isOrthographic(); }
+    //! Fits the selected item (its gizmo box, or a body's bounding sphere) in the view, keeping
+    //! the direction of view; frames everything when nothing is selected.
+    void frameSelected();
     //! Shows or hides the ground grid.
     void setShowGrid(bool show);
     //! Shows or hides the world axes at the origin.
@@ -145,6 +151,8 @@ public Q_SLOTS:
 Q_SIGNALS:
     //! A click without drag hit this gizmo (SceneItem::none() when it hit nothing).
     void itemPicked(const airtrap::SceneItem& item);
+    //! The projection switched between perspective and orthographic.
+    void orthographicChanged(bool orthographic);
 
 protected:
     void initializeGL() override;
@@ -170,6 +178,8 @@ private:
     void drawSolids(const RenderContext& context);
     void paintLegend();
     void paintNotice();
+    //! The box the selected item occupies; none when nothing (or nothing drawn) is selected.
+    std::optional<Aabb> selectionBounds() const;
     float aspectRatio() const;
     void updateParticleLook();
     //! The user moved the camera: stop refitting it on resize.

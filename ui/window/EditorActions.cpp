@@ -113,6 +113,7 @@ void EditorActions::makeSimulationActions() {
 void EditorActions::makeViewActions() {
     frameAll = make("frameAllAction", tr("&Frame All"), tr("Fit the whole scene in the view"));
     frameAll->setShortcut(QKeySequence(Qt::Key_F));
+    makeCameraActions();
     showGrid = checkable(make("showGridAction", tr("&Grid"), tr("Show the ground grid")), true);
     showAxes = checkable(make("showAxesAction", tr("&Axes"), tr("Show the world axes")), true);
     showGizmos = checkable(make("showGizmosAction", tr("G&izmos"),
@@ -140,6 +141,28 @@ void EditorActions::makeViewActions() {
                           "hide them")),
                   true);
     makeParticleSizeActions();
+}
+
+void EditorActions::makeCameraActions() {
+    frameSelected = make("frameSelectedAction", tr("Frame &Selected"),
+                         tr("Fit the selected object in the view"));
+    frameSelected->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_F));
+    // The number row as Blender's keypad: 1 front, 3 side, 7 top, 5 orthographic; 0 the
+    // three-quarter perspective view the editor starts with.
+    viewFront = make("viewFrontAction", tr("&Front View"), tr("Look along −z at the scene"));
+    viewFront->setShortcut(QKeySequence(Qt::Key_1));
+    viewSide = make("viewSideAction", tr("Si&de View"), tr("Look along −x at the scene"));
+    viewSide->setShortcut(QKeySequence(Qt::Key_3));
+    viewTop = make("viewTopAction", tr("&Top View"), tr("Look down at the scene"));
+    viewTop->setShortcut(QKeySequence(Qt::Key_7));
+    viewPerspective = make("viewPerspectiveAction", tr("&Perspective View"),
+                           tr("The three-quarter view in perspective the editor starts with"));
+    viewPerspective->setShortcut(QKeySequence(Qt::Key_0));
+    orthographic = checkable(make("orthographicAction", tr("&Orthographic"),
+                                  tr("Parallel projection: sizes and lengths compare across "
+                                     "the view, as in a technical drawing")),
+                             false);
+    orthographic->setShortcut(QKeySequence(Qt::Key_5));
 }
 
 void EditorActions::makeSurfaceShadingActions() {

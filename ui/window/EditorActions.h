@@ -39,6 +39,12 @@ public:
     QAction* cancelRenderOutputs;
     // View
     QAction* frameAll;
+    QAction* frameSelected;
+    QAction* viewFront;
+    QAction* viewSide;
+    QAction* viewTop;
+    QAction* viewPerspective;
+    QAction* orthographic;
     QAction* showGrid;
     QAction* showAxes;
     QAction* showGizmos;
@@ -69,6 +75,7 @@ public:
 
 private:
     QAction* make(const char* objectName, const QString& text, const QString& statusTip);
+    void makeCameraActions();
     void makeFileActions();
     void makeEditActions();
     void makeSimulationActions();

@@ -202,8 +202,14 @@ void MainWindow::createMenus() {
                           actions_->firstFrame, actions_->lastFrame, actions_->loop});
 
     viewMenu_ = menuBar()->addMenu(tr("&View"));
-    viewMenu_->addActions(
-        {actions_->frameAll, actions_->showGrid, actions_->showAxes, actions_->showGizmos});
+    viewMenu_->addActions({actions_->frameAll, actions_->frameSelected, actions_->showGrid,
+                           actions_->showAxes, actions_->showGizmos});
+    QMenu* camera = viewMenu_->addMenu(tr("&Camera"));
+    camera->setObjectName(QStringLiteral("cameraMenu"));
+    camera->addActions(
+        {actions_->viewFront, actions_->viewSide, actions_->viewTop, actions_->viewPerspective});
+    camera->addSeparator();
+    camera->addAction(actions_->orthographic);
     viewMenu_->addSeparator();
     viewMenu_->addActions({actions_->showWater, actions_->showSurface,
                            actions_->particlesUnderSurface, actions_->bubblesThroughWater});
@@ -295,6 +301,23 @@ void MainWindow::connectPlayback() {
     });
 }
 
+void MainWindow::connectCameraActions() {
+    connect(actions_->frameSelected, &QAction::triggered, viewport_,
+            &ViewportWidget::frameSelected);
+    const auto view = [this](QAction* action, ViewportWidget::CameraView camera) {
+        connect(action, &QAction::triggered, viewport_,
+                [this, camera] { viewport_->setCameraView(camera); });
+    };
+    view(actions_->viewFront, ViewportWidget::CameraView::Front);
+    view(actions_->viewSide, ViewportWidget::CameraView::Side);
+    view(actions_->viewTop, ViewportWidget::CameraView::Top);
+    view(actions_->viewPerspective, ViewportWidget::CameraView::Perspective);
+    connect(actions_->orthographic, &QAction::toggled, viewport_, &ViewportWidget::setOrthographic);
+    // The perspective preset leaves orthographic projection: the menu follows the viewport.
+    connect(viewport_, &ViewportWidget::orthographicChanged, actions_->orthographic,
+            &QAction::setChecked);
+}
+
 void MainWindow::connectActions() {
     connect(actions_->newScene, &QAction::triggered, this, &MainWindow::newScene);
     connect(actions_->openScene, &QAction::triggered, this, &MainWindow::chooseAndOpenScene);
@@ -308,6 +331,7 @@ void MainWindow::connectActions() {
     connect(actions_->remove, &QAction::triggered, sceneTree_, &SceneTreePanel::removeSelected);
     connect(actions_->rename, &QAction::triggered, sceneTree_, &SceneTreePanel::renameSelected);
     connect(actions_->frameAll, &QAction::triggered, viewport_, &ViewportWidget::frameAll);
+    connectCameraActions();
     connect(actions_->showGrid, &QAction::toggled, viewport_, &ViewportWidget::setShowGrid);
     connect(actions_->showAxes, &QAction::toggled, viewport_, &ViewportWidget::setShowAxes);
     connect(actions_->showGizmos, &QAction::toggled, viewport_, &ViewportWidget::setShowGizmos);
@@ -319,6 +343,8 @@ void MainWindow::connectActions() {
     connect(actions_->firstFrame, &QAction::triggered, timeline_, &TimelineWidget::goToFirst);
     connect(actions_->lastFrame, &QAction::triggered, timeline_, &TimelineWidget::goToLast);
     connect(actions_->loop, &QAction::toggled, timeline_, &TimelineWidget::setLoop);
+    // The Loop button and Playback ▸ Loop are one switch.
+    connect(timeline_, &TimelineWidget::loopChanged, actions_->loop, &QAction::setChecked);
     timeline_->setLoop(actions_->loop->isChecked());
     connect(actions_->about, &QAction::triggered, this, &MainWindow::showAbout);
     connect(actions_->guide, &QAction::triggered, this, &MainWindow::showGuide);

@@ -110,6 +110,7 @@ private:
     void connectSelection();
     void connectPlayback();
     void connectActions();
+    void connectCameraActions();
     void restoreSettings();
     void saveSettings() const;
 
