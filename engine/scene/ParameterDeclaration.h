@@ -35,6 +35,11 @@ struct ParameterDeclaration {
     ParameterValue defaultValue{};      //!< taken when the key is missing from a scene file
     std::string help{};                 //!< one sentence, used as tooltip and in the docs
     std::vector<std::string> choices{}; //!< the allowed strings of a Choice parameter
+    //! The parameter means something only while the Choice parameter `appliesWhenKey` of the
+    //! same section or element has one of `appliesWhenValues` (a sphere's radius, not a box's):
+    //! the editor shows it only then. Empty: always.
+    std::string appliesWhenKey{};
+    std::vector<std::string> appliesWhenValues{};
 };
 
 } // namespace airtrap

@@ -511,9 +511,13 @@ std::vector<std::string> SceneValidator::ruleDescriptions() {
         "obstacle, fluid blocks thinner than `particle_spacing`, fluid blocks whose size is not "
         "a whole number of `particle_spacing` (the message says how deep the water is filled), "
         "emitters whose "
-        "`max_particles` is less than one layer of their nozzle, and bodies that overlap the "
-        "water (whose particles inside the body are left out), an obstacle, the container or "
-        "each other at t = 0.",
+        "`max_particles` is less than one layer of their nozzle, and bodies that overlap an "
+        "obstacle, the container or each other at t = 0 (contacts would push them apart with a "
+        "jolt).",
+        "Notes, printed as `note:` and never asked about: a body that starts in a fluid block. "
+        "Placing a body in the water is how a scene floats or sinks one "
+        "(`samples/buoyancy.json`): the body displaces the water, and the block's particles "
+        "inside it are left out.",
     };
 }
 

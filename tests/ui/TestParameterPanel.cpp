@@ -356,6 +356,31 @@ private Q_SLOTS:
         QCOMPARE(undoStack()->index(), 1);
     }
 
+    void onlyTheFieldsOfTheChosenShapeAreShown() {
+        const SceneItem body = document_->addElement("bodies");
+        panel_->showItem(body);
+        const auto shown = [this](const char* key) {
+            return editor(key)->isVisibleTo(panel_.get());
+        };
+        // A box: its size; no radius, height or mesh.
+        QVERIFY(shown("size") && shown("density") && shown("position"));
+        QVERIFY(!shown("radius") && !shown("height") && !shown("mesh") && !shown("mesh_scale"));
+        QVERIFY(
+            !panel_->findChild<QLabel*>(QStringLiteral("label_radius"))->isVisibleTo(panel_.get()));
+        document_->editParameter(body, "shape", std::string("cylinder"));
+        QVERIFY(!shown("size") && shown("radius") && shown("height") && !shown("mesh"));
+        document_->editParameter(body, "shape", std::string("mesh"));
+        QVERIFY(!shown("radius") && shown("mesh") && shown("mesh_scale"));
+        undoStack()->undo(); // back to the cylinder
+        QVERIFY(shown("radius") && shown("height") && !shown("mesh"));
+
+        const SceneItem emitter = document_->addElement("emitters");
+        panel_->showItem(emitter);
+        QVERIFY(shown("radius") && !shown("width") && !shown("height"));
+        document_->editParameter(emitter, "shape", std::string("rectangle"));
+        QVERIFY(!shown("radius") && shown("width") && shown("height"));
+    }
+
     void resetRestoresDefault() {
         panel_->showItem(SceneItem::sectionItem("solver"));
         auto* reset = panel_->findChild<QAction*>(QStringLiteral("reset_max_speed"));

@@ -122,6 +122,9 @@ void ParameterPanel::onParameterChanged(const SceneItem& item, const QString& ke
     for (ParameterRow* row : rows_)
         if (row->key() == changedKey)
             row->refresh();
+    // A new shape shows its own fields (a sphere's radius) and hides the old one's.
+    for (ParameterRow* row : rows_)
+        row->showIfApplies();
     if (changedKey == kNameKey)
         updateHeader();
 }

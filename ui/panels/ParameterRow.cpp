@@ -11,6 +11,7 @@
 #include <QLabel>
 #include <QStyle>
 #include <QToolButton>
+#include <algorithm>
 
 namespace airtrap {
 
@@ -36,6 +37,8 @@ ParameterRow::ParameterRow(SceneDocument& document, SceneItem item,
     editor_->setToolTip(toolTip());
     QLabel* label = createLabel(parent);
     QToolButton* resetButton = createResetButton(parent);
+    label_ = label;
+    resetButton_ = resetButton;
     // The reset action also sits in the label's context menu, where users look for it first.
     label->setContextMenuPolicy(Qt::ActionsContextMenu);
     label->addAction(resetAction_);
@@ -50,6 +53,26 @@ ParameterRow::ParameterRow(SceneDocument& document, SceneItem item,
     connect(editor_, &ParameterEditor::dragStarted, this, &ParameterRow::startDrag);
     connect(editor_, &ParameterEditor::dragFinished, this, &ParameterRow::finishDrag);
     refresh();
+    showIfApplies();
+}
+
+bool ParameterRow::applies() const {
+    if (declaration_.appliesWhenKey.empty())
+        return true;
+    const ParameterValue selector = document_.parameter(item_, declaration_.appliesWhenKey);
+    const auto* choice = std::get_if<std::string>(&selector);
+    const std::vector<std::string>& values = declaration_.appliesWhenValues;
+    return choice != nullptr && std::find(values.begin(), values.end(), *choice) != values.end();
+}
+
+void ParameterRow::showIfApplies() {
+    const bool shown = applies();
+    label_->setVisible(shown);
+    editor_->setVisible(shown);
+    resetButton_->setVisible(shown);
+    // The refusal line only ever shows under a shown row.
+    if (!shown)
+        errorLabel_->hide();
 }
 
 QLabel* ParameterRow::createLabel(QWidget* parent) const {

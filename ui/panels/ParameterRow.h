@@ -37,6 +37,11 @@ public:
     //! Shows the document's value and forgets an earlier refusal; called when the document
     //! changed the value (an edit, undo or redo).
     void refresh();
+    //! The declaration's applicability: whether this row means something for the item as it
+    //! is now (a radius for a sphere, not for a box).
+    bool applies() const;
+    //! Shows the row's widgets, or hides them all, as applies() says.
+    void showIfApplies();
 
 private:
     QLabel* createLabel(QWidget* parent) const;
@@ -55,6 +60,8 @@ private:
     ParameterDeclaration declaration_;
     ParameterEditor* editor_ = nullptr;
     QAction* resetAction_ = nullptr;
+    QLabel* label_ = nullptr;
+    QToolButton* resetButton_ = nullptr;
     QLabel* errorLabel_ = nullptr;
     //! Non-zero while a slider is held: every value of the drag merges into one undo command.
     int dragSession_ = 0;
