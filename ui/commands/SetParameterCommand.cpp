@@ -9,18 +9,20 @@ namespace {
 constexpr int kSetParameterCommandId = 0x5e7;
 } // namespace
 
-SetParameterCommand::SetParameterCommand(SceneDocument& document, SceneItem item, std::string key,
-                                         ParameterValue oldValue, ParameterValue newValue,
-                                         int dragSession, const QString& text)
-    : QUndoCommand(text), document_(document), item_(std::move(item)), key_(std::move(key)),
-      oldValue_(std::move(oldValue)), newValue_(std::move(newValue)), dragSession_(dragSession) {}
+SetParameterCommand::SetParameterCommand(SceneDocument& document, SceneItem item,
+                                         std::vector<ParameterChange> changes, int dragSession,
+                                         const QString& text)
+    : QUndoCommand(text), document_(document), item_(std::move(item)), changes_(std::move(changes)),
+      dragSession_(dragSession) {}
 
 void SetParameterCommand::undo() {
-    document_.applyParameter(item_, key_, oldValue_);
+    for (auto change = changes_.rbegin(); change != changes_.rend(); ++change)
+        document_.applyParameter(item_, change->key, change->oldValue);
 }
 
 void SetParameterCommand::redo() {
-    document_.applyParameter(item_, key_, newValue_);
+    for (const ParameterChange& change : changes_)
+        document_.applyParameter(item_, change.key, change.newValue);
 }
 
 int SetParameterCommand::id() const {
@@ -30,12 +32,22 @@ int SetParameterCommand::id() const {
 bool SetParameterCommand::mergeWith(const QUndoCommand* other) {
     const auto* next = dynamic_cast<const SetParameterCommand*>(other);
     if (next == nullptr || next->dragSession_ != dragSession_ || next->item_ != item_ ||
-        next->key_ != key_)
+        !changesSameKeys(*next))
         return false;
-    // The merged command undoes to the value before the drag and redoes to its last value, which
-    // its history line names.
-    newValue_ = next->newValue_;
+    // The merged command undoes to the values before the drag and redoes to its last values,
+    // which its history line names.
+    for (std::size_t i = 0; i < changes_.size(); ++i)
+        changes_[i].newValue = next->changes_[i].newValue;
     setText(next->text());
+    return true;
+}
+
+bool SetParameterCommand::changesSameKeys(const SetParameterCommand& other) const {
+    if (other.changes_.size() != changes_.size())
+        return false;
+    for (std::size_t i = 0; i < changes_.size(); ++i)
+        if (other.changes_[i].key != changes_[i].key)
+            return false;
     return true;
 }
 

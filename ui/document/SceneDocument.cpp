@@ -114,7 +114,27 @@ QString SceneDocument::editParameter(const SceneItem& item, const std::string& k
                   .arg(elementName(item), QString::fromStdString(std::get<std::string>(newValue)))
             : EditDescription::ofParameter(elementName(item), bound.declaration, newValue);
     undoStack_->push(
-        new SetParameterCommand(*this, item, key, oldValue, newValue, dragSession, text));
+        new SetParameterCommand(*this, item, {{key, oldValue, newValue}}, dragSession, text));
+    return {};
+}
+
+QString
+SceneDocument::editParameters(const SceneItem& item,
+                              const std::vector<std::pair<std::string, ParameterValue>>& values,
+                              int dragSession, const QString& text) {
+    if (!contains(item) || !item.hasParameters())
+        return tr("%1 no longer exists").arg(elementName(item));
+    std::vector<ParameterChange> changes;
+    for (const auto& [key, value] : values) {
+        const BoundParameter& bound = boundParameter(item, key);
+        const ParameterValue newValue = normalised(bound.declaration, value);
+        const std::string error =
+            ParameterCodec::check(bound.declaration, newValue, pathOf(item, key));
+        if (!error.empty())
+            return QString::fromStdString(error);
+        changes.push_back({key, parameter(item, key), newValue});
+    }
+    undoStack_->push(new SetParameterCommand(*this, item, std::move(changes), dragSession, text));
     return {};
 }
 

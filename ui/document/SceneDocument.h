@@ -55,6 +55,12 @@ public:
     //! one undo command (a slider drag is one command); 0 never merges.
     QString editParameter(const SceneItem& item, const std::string& key,
                           const ParameterValue& value, int dragSession = 0);
+    //! Sets several parameters of one item as one undo step named `text` (a move changes both
+    //! corners of a fluid block); merges with the previous step of the same `dragSession` and
+    //! keys. Returns the first refusal, with nothing changed.
+    QString editParameters(const SceneItem& item,
+                           const std::vector<std::pair<std::string, ParameterValue>>& values,
+                           int dragSession, const QString& text);
     //! A fresh number for editParameter's dragSession.
     int newDragSession() { return ++lastDragSession_; }
 

@@ -10,14 +10,14 @@ namespace airtrap {
 
 namespace {
 //! The field shares the row with the slider but must keep room for about ten digits.
-constexpr int kFieldMinimumWidth = 90;
+constexpr int kNumberFieldMinimumWidth = 90;
 } // namespace
 
 RealEditor::RealEditor(const ParameterDeclaration& declaration, QWidget* parent)
     : ParameterEditor(declaration, parent), field_(new NumberField(false, this)),
       scale_(SliderScale::forDeclaration(declaration)) {
     field_->setObjectName(QStringLiteral("field"));
-    field_->setMinimumWidth(kFieldMinimumWidth);
+    field_->setMinimumWidth(kNumberFieldMinimumWidth);
     connect(field_, &NumberField::committed, this,
             [this](double number) { Q_EMIT edited(number, false); });
 

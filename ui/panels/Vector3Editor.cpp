@@ -9,7 +9,7 @@ namespace airtrap {
 
 namespace {
 //! Three fields share one row; each still needs room for a number like -12.345.
-constexpr int kFieldMinimumWidth = 60;
+constexpr int kComponentFieldMinimumWidth = 60;
 } // namespace
 
 Vector3Editor::Vector3Editor(const ParameterDeclaration& declaration, QWidget* parent)
@@ -21,7 +21,7 @@ Vector3Editor::Vector3Editor(const ParameterDeclaration& declaration, QWidget* p
     for (int axis = 0; axis < 3; ++axis) {
         auto* field = new NumberField(false, this);
         field->setObjectName(axisNames[axis]);
-        field->setMinimumWidth(kFieldMinimumWidth);
+        field->setMinimumWidth(kComponentFieldMinimumWidth);
         field->setToolTip(axisNames[axis]);
         connect(field, &NumberField::committed, this,
                 [this, axis](double number) { onComponentCommitted(axis, number); });

@@ -1,5 +1,6 @@
 #include "viewport/ViewportWidget.h"
 
+#include "document/ElementMover.h"
 #include "viewport/QtVectors.h"
 #include "viewport/RenderContext.h"
 
@@ -293,9 +294,9 @@ float ViewportWidget::aspectRatio() const {
 
 // --- OpenGL --------------------------------------------------------------------------------------
 
-std::array<Drawable*, 8> ViewportWidget::drawables() {
-    return {&bubbleDrawable_, &subgridBubbles_, &bodyDrawable_, &particles_,
-            &surface_,        &grid_,           &axes_,         &boxes_};
+std::array<Drawable*, 9> ViewportWidget::drawables() {
+    return {&bubbleDrawable_, &subgridBubbles_, &bodyDrawable_, &particles_, &surface_,
+            &grid_,           &axes_,           &boxes_,        &moveGizmo_};
 }
 
 void ViewportWidget::initializeGL() {
@@ -368,6 +369,8 @@ void ViewportWidget::drawScene() {
     }
     if (hasScene_ && showGizmos_) {
         boxes_.draw(context);
+        updateMoveGizmo();
+        moveGizmo_.draw(context);
     }
     // Translucent: last, so that everything behind it is there to show through.
     if (showSurface_ && frame_)
@@ -448,12 +451,44 @@ void ViewportWidget::cameraMovedByUser() {
     update();
 }
 
+void ViewportWidget::updateMoveGizmo() {
+    const bool shown =
+        hasScene_ && showGizmos_ && !isPlayback() && ElementMover::canMove(selection_);
+    const std::optional<Aabb> bounds = shown ? selectionBounds() : std::nullopt;
+    moveGizmo_.setOrigin(bounds ? std::optional(toQVector3D(bounds->center())) : std::nullopt);
+    moveGizmo_.fitTo(camera_, size());
+}
+
+bool ViewportWidget::startMove(const QPointF& position) {
+    updateMoveGizmo();
+    const std::optional<int> axis = moveGizmo_.axisAt(position, camera_, size());
+    if (!axis || !moveGizmo_.beginDrag(*axis, position, camera_, size())) {
+        return false;
+    }
+    lastMoveOffset_ = 0.0;
+    Q_EMIT moveStarted(selection_);
+    update();
+    return true;
+}
+
 void ViewportWidget::mousePressEvent(QMouseEvent* event) {
-    drag_.press(event->position(), event->button(), event->modifiers());
     event->accept();
+    if (event->button() == Qt::LeftButton && event->modifiers() == Qt::NoModifier &&
+        startMove(event->position())) {
+        return;
+    }
+    drag_.press(event->position(), event->button(), event->modifiers());
 }
 
 void ViewportWidget::mouseMoveEvent(QMouseEvent* event) {
+    if (const std::optional<int> axis = moveGizmo_.draggedAxis()) {
+        const double offset = moveGizmo_.dragOffset(event->position(), camera_, size());
+        if (offset != lastMoveOffset_) {
+            lastMoveOffset_ = offset;
+            Q_EMIT moveDragged(selection_, *axis, offset);
+        }
+        return;
+    }
     const std::optional<QPointF> delta = drag_.move(event->position());
     if (!delta) {
         return;
@@ -470,6 +505,14 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event) {
 }
 
 void ViewportWidget::mouseReleaseEvent(QMouseEvent* event) {
+    if (moveGizmo_.draggedAxis()) {
+        if (event->button() == Qt::LeftButton) {
+            moveGizmo_.endDrag();
+            Q_EMIT moveFinished(selection_);
+            update();
+        }
+        return;
+    }
     if (drag_.release(event->button())) {
         Q_EMIT itemPicked(itemAt(event->position()));
     }

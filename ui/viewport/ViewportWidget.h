@@ -15,6 +15,7 @@
 #include "viewport/BubbleDrawable.h"
 #include "viewport/DragTracker.h"
 #include "viewport/GridDrawable.h"
+#include "viewport/MoveGizmo.h"
 #include "viewport/OrbitCamera.h"
 #include "viewport/ParticleDrawable.h"
 #include "viewport/SceneBodies.h"
@@ -58,6 +59,8 @@ public:
     bool isPlayback() const { return frame_ != nullptr; }
     //! The highlighted item.
     const SceneItem& selection() const { return selection_; }
+    //! The arrows that move the selection, where they were last drawn (tests, overlays).
+    const MoveGizmo& moveGizmo() const { return moveGizmo_; }
     //! The line shown over the view ("Frame 40 is not baked yet"); empty when none.
     const QString& notice() const { return notice_; }
     //! Radius the particles are drawn with, in metres.
@@ -153,6 +156,11 @@ Q_SIGNALS:
     void itemPicked(const airtrap::SceneItem& item);
     //! The projection switched between perspective and orthographic.
     void orthographicChanged(bool orthographic);
+    //! The move gizmo: a drag of `item` along world axis `axis` began, moved it `offset` metres
+    //! from where it stood (rounded to a millimetre), and ended.
+    void moveStarted(const airtrap::SceneItem& item);
+    void moveDragged(const airtrap::SceneItem& item, int axis, double offset);
+    void moveFinished(const airtrap::SceneItem& item);
 
 protected:
     void initializeGL() override;
@@ -167,7 +175,12 @@ protected:
 
 private:
     //! Everything drawn in 3D: opaque bubbles, bodies and water first, lines over them.
-    std::array<Drawable*, 8> drawables();
+    std::array<Drawable*, 9> drawables();
+    //! Puts the move gizmo at the selected object's centre, or hides it (nothing movable
+    //! selected, gizmos hidden, or a cached frame shown).
+    void updateMoveGizmo();
+    //! A left press on an arrow of the move gizmo starts moving the selection; true when it did.
+    bool startMove(const QPointF& position);
     //! Puts the bodies where the shown frame has them (or at their scene poses) for drawing.
     void placeBodies();
     //! Frees every GL object while the context is current (before it goes away).
@@ -196,6 +209,9 @@ private:
     SubgridBubbleDrawable subgridBubbles_;
     SurfaceDrawable surface_;
     SpeedLegend legend_;
+    MoveGizmo moveGizmo_;
+    //! The last offset reported during a move, so that only changes are reported.
+    double lastMoveOffset_ = 0.0;
     QString notice_;
 
     SceneGizmos gizmos_;

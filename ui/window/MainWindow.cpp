@@ -7,6 +7,7 @@
 #include "controller/RenderOutputController.h"
 #include "controller/SimulationController.h"
 #include "core/Error.h"
+#include "document/ElementMover.h"
 #include "document/SceneDocument.h"
 #include "panels/BodyAddMenu.h"
 #include "panels/ParameterPanel.h"
@@ -50,7 +51,8 @@ constexpr auto kSceneFilter = "Airtrap scenes (*.json);;All files (*)";
 } // namespace
 
 MainWindow::MainWindow(QWidget* parent)
-    : QMainWindow(parent), document_(std::make_unique<SceneDocument>()) {
+    : QMainWindow(parent), document_(std::make_unique<SceneDocument>()),
+      mover_(std::make_unique<ElementMover>(*document_)) {
     setObjectName(QStringLiteral("mainWindow"));
     setDockNestingEnabled(true);
     createParts();
@@ -287,6 +289,16 @@ void MainWindow::connectSelection() {
         parameterPanel_->showItem(item);
         viewport_->setSelection(item);
     });
+    connect(viewport_, &ViewportWidget::moveStarted, this,
+            [this](const SceneItem& item) { mover_->begin(item); });
+    connect(viewport_, &ViewportWidget::moveDragged, this,
+            [this](const SceneItem&, int axis, double offset) {
+                // A position out of range stops the object at the last one allowed.
+                const QString refusal = mover_->moveTo(axis, offset);
+                if (!refusal.isEmpty())
+                    statusBar()->showMessage(refusal, 5000);
+            });
+    connect(viewport_, &ViewportWidget::moveFinished, this, [this] { mover_->end(); });
 }
 
 void MainWindow::connectPlayback() {

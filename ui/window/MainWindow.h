@@ -19,6 +19,7 @@ class QDialog;
 namespace airtrap {
 
 class BakeSession;
+class ElementMover;
 class EditorActions;
 class FrameLoader;
 class LogPanel;
@@ -136,6 +137,7 @@ private:
     void showHelpDialog(QDialog* dialog);
 
     std::unique_ptr<SceneDocument> document_;
+    std::unique_ptr<ElementMover> mover_;
     EditorActions* actions_ = nullptr;
     ViewportWidget* viewport_ = nullptr;
     SceneTreePanel* sceneTree_ = nullptr;
