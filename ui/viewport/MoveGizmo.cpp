@@ -13,6 +13,9 @@ const QColor kDraggedColour(255, 220, 60);
 constexpr float kArmShareOfView = 0.12f;
 //! How near (pixels) the cursor must come to an arrow to take it.
 constexpr double kGrabPixels = 8.0;
+//! The arrows start this share of the arm away from the centre, which stays visible (and a click
+//! there picks what is under it).
+constexpr float kGapShare = 0.3f;
 //! Arrowheads: length and half-width as a share of the arm.
 constexpr float kHeadLength = 0.2f;
 constexpr float kHeadHalfWidth = 0.07f;
@@ -62,12 +65,13 @@ std::optional<int> MoveGizmo::axisAt(const QPointF& pixel, const OrbitCamera& ca
                                      const QSize& size) const {
     if (!origin_)
         return std::nullopt;
-    const QPointF centre = camera.project(*origin_, size);
     std::optional<int> nearest;
     double nearestDistance = kGrabPixels;
     for (int axis = 0; axis < 3; ++axis) {
+        const QPointF start =
+            camera.project(*origin_ + unit(axis) * (kGapShare * armLength_), size);
         const QPointF tip = camera.project(*origin_ + unit(axis) * armLength_, size);
-        const double distance = distanceToSegment(pixel, centre, tip);
+        const double distance = distanceToSegment(pixel, start, tip);
         if (distance <= nearestDistance) {
             nearestDistance = distance;
             nearest = axis;
@@ -130,7 +134,7 @@ void MoveGizmo::rebuild() {
         for (int axis = 0; axis < 3; ++axis) {
             const QColor colour = dragAxis_ == axis ? kDraggedColour : kAxisColours[axis];
             const QVector3D tip = *origin_ + unit(axis) * armLength_;
-            segment(*origin_, tip, colour);
+            segment(*origin_ + unit(axis) * (kGapShare * armLength_), tip, colour);
             // A head in each of the two planes through the axis, so it reads from any side.
             const QVector3D back = unit(axis) * (kHeadLength * armLength_);
             for (int side : {(axis + 1) % 3, (axis + 2) % 3}) {

@@ -452,8 +452,8 @@ void ViewportWidget::cameraMovedByUser() {
 }
 
 void ViewportWidget::updateMoveGizmo() {
-    const bool shown =
-        hasScene_ && showGizmos_ && !isPlayback() && ElementMover::canMove(selection_);
+    const bool shown = hasScene_ && showGizmos_ && showSelection_ && !isPlayback() &&
+                       ElementMover::canMove(selection_);
     const std::optional<Aabb> bounds = shown ? selectionBounds() : std::nullopt;
     moveGizmo_.setOrigin(bounds ? std::optional(toQVector3D(bounds->center())) : std::nullopt);
     moveGizmo_.fitTo(camera_, size());
