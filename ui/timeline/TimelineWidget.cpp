@@ -64,9 +64,13 @@ void TimelineWidget::createControls() {
     loopButton_->setIcon(style()->standardIcon(QStyle::SP_BrowserReload));
     loopButton_->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
     loopButton_->setCheckable(true);
-    // A raised frame only while on: a flat checked tool button looks the same as an unchecked one
-    // in several styles.
+    // Raised, and filled with the highlight colour while on: a flat checked tool button looks the
+    // same as an unchecked one in several styles.
     loopButton_->setAutoRaise(false);
+    loopButton_->setStyleSheet(QStringLiteral(
+        "QToolButton:checked { background-color: palette(highlight); "
+        "color: palette(highlighted-text); border: 1px solid palette(dark); border-radius: 3px; "
+        "padding: 2px 4px; }"));
     connect(loopButton_, &QToolButton::toggled, this, &TimelineWidget::setLoop);
     showLoop();
     createRateChoice();

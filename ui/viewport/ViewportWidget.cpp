@@ -340,6 +340,12 @@ void ViewportWidget::paintGL() {
     if (hasScene_ || isPlayback()) {
         drawScene();
     }
+    // The picture is opaque: translucent layers (the water surface) leave alpha below 1 in the
+    // framebuffer, which whoever composes the widget (the window's grab, a compositor) would
+    // take for see-through pixels and blend into false colours.
+    gl->glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_TRUE);
+    gl->glClear(GL_COLOR_BUFFER_BIT);
+    gl->glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     // The legend explains the water's colours: without water it explains nothing.
     if (isPlayback() && drawsParticles()) {
         paintLegend();
