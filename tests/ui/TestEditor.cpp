@@ -51,6 +51,16 @@ Scene tinyDamBreak() {
     return scene;
 }
 
+//! Saves the tiny dam break as tiny.json in `folder` and opens it in `window`, shown and without
+//! dialogs.
+bool openTinyScene(MainWindow& window, const QTemporaryDir& folder) {
+    const QString scenePath = folder.filePath(QStringLiteral("tiny.json"));
+    writeSceneFile(tinyDamBreak(), scenePath.toStdString());
+    window.setInteractive(false);
+    window.show();
+    return window.openScene(scenePath);
+}
+
 //! Presses `button` on the next message box that opens (the test's answer to a question).
 void answerNextMessageBox(QMessageBox::StandardButton button) {
     QTimer::singleShot(0, [button] {
@@ -152,12 +162,8 @@ private Q_SLOTS:
 
     void bakesWhileTheTimelineFillsAndScrubs() {
         QTemporaryDir folder;
-        const QString scenePath = folder.filePath(QStringLiteral("tiny.json"));
-        writeSceneFile(tinyDamBreak(), scenePath.toStdString());
         MainWindow window;
-        window.setInteractive(false);
-        window.show();
-        QVERIFY(window.openScene(scenePath));
+        QVERIFY(openTinyScene(window, folder));
         QCOMPARE(window.cacheDirectory(), folder.filePath(QStringLiteral("tiny.cache")));
 
         QSignalSpy frames(window.controller(), &SimulationController::frameFinished);
@@ -179,12 +185,8 @@ private Q_SLOTS:
 
     void anUnbakedFrameSaysSoInTheViewport() {
         QTemporaryDir folder;
-        const QString scenePath = folder.filePath(QStringLiteral("tiny.json"));
-        writeSceneFile(tinyDamBreak(), scenePath.toStdString());
         MainWindow window;
-        window.setInteractive(false);
-        window.show();
-        QVERIFY(window.openScene(scenePath));
+        QVERIFY(openTinyScene(window, folder));
         window.showFrame(1);
         QCOMPARE(window.viewport()->notice(), QString()); // editing the setup
         window.showFrame(4);
