@@ -141,9 +141,13 @@ void BakeSession::removeMadeCache(const QString& dir) {
 void BakeSession::rememberMadeFolder(const QString& dir) {
     QSettings& settings = EditorSettings::store();
     QStringList folders = settings.value(QLatin1String(kMadeFoldersKey)).toStringList();
+    // Folders deleted since (by hand, or by another editor) are forgotten, so the list stays as
+    // short as the caches that exist.
+    folders.removeIf([](const QString& folder) { return !QFileInfo::exists(folder); });
     const QString path = QFileInfo(dir).absoluteFilePath();
     if (!folders.contains(path))
-        settings.setValue(QLatin1String(kMadeFoldersKey), folders << path);
+        folders << path;
+    settings.setValue(QLatin1String(kMadeFoldersKey), folders);
 }
 
 bool BakeSession::madeFolder(const QString& dir) {
