@@ -7,9 +7,11 @@
 #include "post/WaterGrids.h"
 
 #include <cmath>
+#include <new>
 #include <openvdb/io/Stream.h>
 #include <openvdb/tools/LevelSetUtil.h>
 #include <sstream>
+#include <stdexcept>
 
 namespace airtrap {
 
@@ -92,6 +94,15 @@ WaterVolume WaterVolumeFile::read(const std::string& path) {
     } catch (const openvdb::Exception& error) {
         throw Error(ErrorKind::CacheCorrupt,
                     path + ": not a readable OpenVDB file (" + std::string(error.what()) + ")");
+    } catch (const std::bad_alloc&) {
+        // OpenVDB allocates by the sizes the file states: damaged ones ask for terabytes.
+        throw Error(ErrorKind::CacheCorrupt,
+                    path +
+                        ": not a readable OpenVDB file (it asks for more memory than there is: "
+                        "its sizes are damaged, or the volume is larger than this machine holds)");
+    } catch (const std::length_error&) {
+        throw Error(ErrorKind::CacheCorrupt,
+                    path + ": not a readable OpenVDB file (a damaged size in it)");
     }
 }
 
