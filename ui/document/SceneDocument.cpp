@@ -98,23 +98,19 @@ void SceneDocument::replaceScene(Scene scene, const QString& path) {
 
 QString SceneDocument::editParameter(const SceneItem& item, const std::string& key,
                                      const ParameterValue& value, int dragSession) {
-    if (!contains(item) || !item.hasParameters())
-        return tr("%1 no longer exists").arg(QString::fromStdString(pathOf(item, key)));
-    const BoundParameter& bound = boundParameter(item, key);
-    const ParameterValue newValue = normalised(bound.declaration, value);
-    const std::string error = ParameterCodec::check(bound.declaration, newValue, pathOf(item, key));
-    if (!error.empty())
-        return QString::fromStdString(error);
-    const ParameterValue oldValue = parameter(item, key);
-    if (oldValue == newValue)
+    ParameterChange change;
+    if (const QString refusal = checkedChange(item, key, value, change); !refusal.isEmpty())
+        return refusal;
+    if (change.oldValue == change.newValue)
         return {};
     const QString text =
         key == kNameKey
             ? tr("Rename %1 to %2")
-                  .arg(elementName(item), QString::fromStdString(std::get<std::string>(newValue)))
-            : EditDescription::ofParameter(elementName(item), bound.declaration, newValue);
-    undoStack_->push(
-        new SetParameterCommand(*this, item, {{key, oldValue, newValue}}, dragSession, text));
+                  .arg(elementName(item),
+                       QString::fromStdString(std::get<std::string>(change.newValue)))
+            : EditDescription::ofParameter(elementName(item), boundParameter(item, key).declaration,
+                                           change.newValue);
+    undoStack_->push(new SetParameterCommand(*this, item, {change}, dragSession, text));
     return {};
 }
 
@@ -122,20 +118,26 @@ QString
 SceneDocument::editParameters(const SceneItem& item,
                               const std::vector<std::pair<std::string, ParameterValue>>& values,
                               int dragSession, const QString& text) {
-    if (!contains(item) || !item.hasParameters())
-        return tr("%1 no longer exists").arg(elementName(item));
-    std::vector<ParameterChange> changes;
-    for (const auto& [key, value] : values) {
-        const BoundParameter& bound = boundParameter(item, key);
-        const ParameterValue newValue = normalised(bound.declaration, value);
-        const std::string error =
-            ParameterCodec::check(bound.declaration, newValue, pathOf(item, key));
-        if (!error.empty())
-            return QString::fromStdString(error);
-        changes.push_back({key, parameter(item, key), newValue});
-    }
+    std::vector<ParameterChange> changes(values.size());
+    for (std::size_t i = 0; i < values.size(); ++i)
+        if (const QString refusal =
+                checkedChange(item, values[i].first, values[i].second, changes[i]);
+            !refusal.isEmpty())
+            return refusal;
     undoStack_->push(new SetParameterCommand(*this, item, std::move(changes), dragSession, text));
     return {};
+}
+
+QString SceneDocument::checkedChange(const SceneItem& item, const std::string& key,
+                                     const ParameterValue& value, ParameterChange& change) const {
+    if (!contains(item) || !item.hasParameters())
+        return tr("%1 no longer exists").arg(QString::fromStdString(pathOf(item, key)));
+    const BoundParameter& bound = boundParameter(item, key);
+    change.key = key;
+    change.newValue = normalised(bound.declaration, value);
+    change.oldValue = parameter(item, key);
+    return QString::fromStdString(
+        ParameterCodec::check(bound.declaration, change.newValue, pathOf(item, key)));
 }
 
 SceneItem SceneDocument::addElement(const std::string& section) {

@@ -3,6 +3,7 @@
 // every edit goes through. Widgets never change the Scene directly: they call the edit functions
 // below, which check the value against its declaration and push an undo command; the commands call
 // the apply/insert/erase functions, which change the Scene and emit the signals views follow.
+#include "commands/SetParameterCommand.h"
 #include "document/SceneItem.h"
 #include "scene/ParameterDeclaration.h"
 #include "scene/Scene.h"
@@ -119,6 +120,10 @@ Q_SIGNALS:
 private:
     void replaceScene(Scene scene, const QString& path);
     const BoundParameter& boundParameter(const SceneItem& item, const std::string& key) const;
+    //! The change `value` makes to `key` of `item` (normalised to the declaration's kind), or the
+    //! reason it is refused (the item is gone, the value out of range).
+    QString checkedChange(const SceneItem& item, const std::string& key,
+                          const ParameterValue& value, ParameterChange& change) const;
 
     Scene scene_;
     QString filePath_;
