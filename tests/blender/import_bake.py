@@ -50,8 +50,12 @@ def evaluated_mesh(obj, frame):
     return obj.evaluated_get(bpy.context.evaluated_depsgraph_get()).data
 
 
-def import_bake(folder, **options):
-    bpy.ops.wm.read_factory_settings(use_empty=True)
+def import_bake(folder, startup_scene=False, moved_cube=False, **options):
+    """Imports `folder` into an empty scene, or into Blender's startup scene (cube, light,
+    camera), its cube moved aside when `moved_cube`."""
+    bpy.ops.wm.read_factory_settings(use_empty=not startup_scene)
+    if moved_cube:
+        bpy.data.objects["Cube"].location.x = 3.0
     if addon_utils.enable("airtrap_importer", default_set=True) is None:
         fail("the add-on does not enable")
     if bpy.ops.import_scene.airtrap_bake(directory=folder, **options) != {'FINISHED'}:
@@ -222,6 +226,20 @@ for prefix in ("Airtrap camera", "Airtrap sun", "Airtrap floor", "Airtrap tank")
     if len(found) != 1:
         fail("after a second import the scene has %s" % found)
 print("a second import replaces the first one's preview")
+
+# Into Blender's startup scene, as an artist does: its untouched cube (2 m at the origin, over
+# the tank), light and camera go, so that the preview camera sees the water; a cube that was
+# moved shows a scene worked in, and everything in it stays.
+import_bake(export_dir, startup_scene=True)
+left = sorted(name for name in ("Cube", "Light", "Camera") if name in bpy.data.objects)
+if left or bpy.context.scene.camera.name != "Airtrap camera" or "Cube" in bpy.data.meshes:
+    fail("imported into the startup scene, %s stayed and the camera is %s"
+         % (left, bpy.context.scene.camera.name))
+import_bake(export_dir, startup_scene=True, moved_cube=True)
+left = sorted(name for name in ("Cube", "Light", "Camera") if name in bpy.data.objects)
+if left != ["Camera", "Cube", "Light"]:
+    fail("imported into a startup scene whose cube was moved, only %s stayed" % left)
+print("startup scene: the untouched cube, light and camera removed; a moved cube kept")
 
 # Bodies, from three frames of the buoyancy sample.
 import_bake(bodies_dir)

@@ -1,6 +1,7 @@
 # Run by ctest (label blender) as
 #   blender -b --factory-startup --python-exit-code 1 --python render_check.py -- EXPORT_DIR WORK_DIR
-# The default import (with its preview scene) saved twice, once with the water hidden from the
+# The default import (with its preview scene) into Blender's startup scene, as an artist makes
+# it, saved twice, once with the water hidden from the
 # render; each file rendered at the last frame by a fresh Blender without the add-on, Cycles at
 # low samples and a small size. The water must change a visible share of the picture, and the
 # picture must not be flat. Exits non-zero on the first failure, naming it.
@@ -51,7 +52,7 @@ def pixels(path):
 
 
 os.makedirs(work_dir, exist_ok=True)
-bpy.ops.wm.read_factory_settings(use_empty=True)
+bpy.ops.wm.read_factory_settings()
 addon_utils.enable("airtrap_importer", default_set=True)
 if bpy.ops.import_scene.airtrap_bake(directory=export_dir) != {'FINISHED'}:
     fail("the import did not finish")

@@ -53,6 +53,8 @@ class ImportAirtrapBake(bpy.types.Operator, ImportHelper):
             return {'CANCELLED'}
         for warning in report.warnings:
             self.report({'WARNING'}, warning)
+        for note in report.notes:
+            self.report({'INFO'}, note)
         self.report({'INFO'}, "Airtrap bake imported: %s" % ", ".join(sorted(report.objects)))
         return {'FINISHED'}
 

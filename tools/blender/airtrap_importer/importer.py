@@ -24,6 +24,8 @@ class ImportReport:
     def __init__(self):
         self.objects = {}
         self.warnings = []
+        # What the import did besides making objects, said as information.
+        self.notes = []
         # The hidden collections holding each sequence's per-frame objects.
         self.frame_collections = []
 
@@ -224,6 +226,7 @@ def import_bake(directory, context, options=None):
     options = options or ImportOptions()
     listing = bake_listing.read_listing(directory)
     report = ImportReport()
+    startup = preview_scene.untouched_startup_objects(context.scene) if options.preview else []
     for warning in listing.warnings:
         report.warn(warning)
     collection = bpy.data.collections.new(listing.scene_name)
@@ -239,8 +242,12 @@ def import_bake(directory, context, options=None):
         _import_volume(listing, collection, report)
     _set_frames(context.scene, listing)
     if options.preview:
-        preview_scene.set_up(context.scene, collection, report.frame_collections,
-                             listing.container)
+        preview = preview_scene.set_up(context.scene, collection, report.frame_collections,
+                                       listing.container)
+        if preview is not None and startup:
+            preview_scene.remove_startup_objects(startup)
+            report.notes.append("Blender's startup cube, light and camera removed: the preview "
+                                "scene frames and lights the bake")
     return report
 
 

@@ -17,7 +17,11 @@ LENS_MM = 35.0
 FRAME_MARGIN = 1.15
 # Marks the collection an import's preview lives in.
 PREVIEW_TAG = "airtrap_preview"
-_DATA_BLOCKS = {"Camera": "cameras", "SunLight": "lights", "Mesh": "meshes"}
+_DATA_BLOCKS = {"Camera": "cameras", "SunLight": "lights", "PointLight": "lights",
+                "Mesh": "meshes"}
+# Blender's startup scene: a 2 m cube at the origin, a point light and a camera. The cube would
+# stand over the tank, hiding the water from the preview's camera.
+STARTUP_OBJECTS = {"Cube": 'MESH', "Light": 'LIGHT', "Camera": 'CAMERA'}
 
 
 def _bounds(collections):
@@ -163,20 +167,49 @@ def _render_settings(scene):
     scene.render.resolution_percentage = 100
 
 
+def _is_startup_cube(obj):
+    return (len(obj.data.vertices) == 8 and obj.location.length < 1e-6
+            and all(abs(size - 2.0) < 1e-6 for size in obj.dimensions)
+            and obj.rotation_euler.to_quaternion().angle < 1e-6)
+
+
+def untouched_startup_objects(scene):
+    """Blender's startup cube, light and camera when the scene holds exactly them and the cube
+    has not been moved, turned, scaled or edited; otherwise none: a scene someone has worked in
+    keeps all it holds."""
+    objects = list(scene.objects)
+    if sorted(obj.name for obj in objects) != sorted(STARTUP_OBJECTS):
+        return []
+    if any(obj.type != STARTUP_OBJECTS[obj.name] for obj in objects):
+        return []
+    cube = scene.objects["Cube"]
+    return objects if _is_startup_cube(cube) else []
+
+
+def _remove_with_data(obj):
+    data = obj.data
+    material_list = list(data.materials) if hasattr(data, "materials") else []
+    bpy.data.objects.remove(obj)
+    blocks = _DATA_BLOCKS.get(type(data).__name__)
+    if blocks is not None and data.users == 0:
+        getattr(bpy.data, blocks).remove(data)
+    for material in material_list:
+        if material is not None and material.users == 0:
+            bpy.data.materials.remove(material)
+
+
+def remove_startup_objects(objects):
+    """Removes the startup objects found by untouched_startup_objects (before the import)."""
+    for obj in objects:
+        _remove_with_data(obj)
+
+
 def _remove_earlier_previews():
     """An earlier import's preview goes, with its data: a second import is framed and lit once,
     by its own camera and sun."""
     for collection in [c for c in bpy.data.collections if c.get(PREVIEW_TAG)]:
         for obj in list(collection.objects):
-            data = obj.data
-            materials = list(data.materials) if hasattr(data, "materials") else []
-            bpy.data.objects.remove(obj)
-            blocks = _DATA_BLOCKS.get(type(data).__name__)
-            if blocks is not None and data.users == 0:
-                getattr(bpy.data, blocks).remove(data)
-            for material in materials:
-                if material is not None and material.users == 0:
-                    bpy.data.materials.remove(material)
+            _remove_with_data(obj)
         bpy.data.collections.remove(collection)
 
 
