@@ -1,9 +1,8 @@
 # Run by ctest (label blender) as
 #   blender -b --factory-startup --python-exit-code 1 --python render_check.py -- EXPORT_DIR WORK_DIR
 # The default import (with its preview scene) into Blender's startup scene, as an artist makes
-# it, saved twice, once with the water hidden from the
-# render; each file rendered at the last frame by a fresh Blender without the add-on, Cycles at
-# low samples and a small size. The water must change a visible share of the picture, and the
+# it, saved twice, once with the water hidden from the render; each file rendered at the last
+# frame by a fresh Blender without the add-on, Cycles at low samples and a small size. The water must change a visible share of the picture, and the
 # picture must not be flat. Exits non-zero on the first failure, naming it.
 import os
 import subprocess
