@@ -34,9 +34,9 @@ void ExportCommand::addTo(CLI::App& parent) {
     app_ = parent.add_subcommand("export", "Write cached frames as files renderers read");
     app_->add_option("DIR", cacheDir_, "Cache folder")->required();
     app_->add_option("--format", format_,
-                     "obj: water_/bubbles_/bodies_0001.obj meshes; vdb: fluid_0001.vdb "
-                     "(surface, density, vel); ply: particles_0001.ply points. obj and vdb "
-                     "need `post` first")
+                     "obj: water_/bubbles_/subgrid_/bodies_0001.obj meshes; vdb: "
+                     "fluid_0001.vdb (surface, density, vel); ply: particles_/bubbles_/"
+                     "subgrid_0001.ply points. obj and vdb need `post` first")
         ->required()
         ->check(CLI::IsMember(formatNames()));
     app_->add_option("--out,-o", outDir_, "Output folder (created if missing)")->required();

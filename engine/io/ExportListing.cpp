@@ -1,9 +1,11 @@
 #include "io/ExportListing.h"
 
+#include "cache/FrameFile.h"
 #include "core/AtomicFile.h"
 
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -89,13 +91,33 @@ void ExportListing::addFiles(const std::vector<std::string>& names, UpAxis up) {
     for (const auto& [sequence, frames] : added) {
         nlohmann::json& entry = sequences[sequence];
         std::set<int> all = frames;
+        nlohmann::json checksums = nlohmann::json::object();
         if (entry.is_object() && entry.value("up_axis", "") == axis && entry["frames"].is_array())
             for (const nlohmann::json& frame : entry["frames"])
                 if (frame.is_number_integer())
                     all.insert(frame.get<int>());
+        if (entry.is_object() && entry.value("up_axis", "") == axis && entry["crc32"].is_object())
+            for (const auto& [frame, crc] : entry["crc32"].items())
+                // A frame written again is checked again (recordChecksums).
+                if (crc.is_number_unsigned() && !frames.count(std::atoi(frame.c_str())))
+                    checksums[frame] = crc;
         entry = {{"pattern", patterns[sequence]},
                  {"up_axis", axis},
-                 {"frames", std::vector<int>(all.begin(), all.end())}};
+                 {"frames", std::vector<int>(all.begin(), all.end())},
+                 {"crc32", checksums}};
+    }
+}
+
+void ExportListing::recordChecksums(const std::string& outDir,
+                                    const std::vector<std::string>& names) {
+    nlohmann::json& sequences = json_["sequences"];
+    for (const std::string& name : names) {
+        const std::optional<SequenceFile> file = sequenceFileOf(name);
+        if (!file || !sequences.contains(file->sequence))
+            continue;
+        const std::vector<std::uint8_t> bytes = AtomicFile::read(outDir + "/" + name);
+        sequences[file->sequence]["crc32"][std::to_string(file->frame)] =
+            computeCrc32(bytes.data(), bytes.size());
     }
 }
 

@@ -2,9 +2,11 @@
 // `export.json` beside the exported sequences (docs/CLI.md "export"): what an importer needs to
 // load them without guessing (the Blender add-on reads it): the scene's name, fps and frame
 // range, the units, the container's box, and for each sequence its file pattern, the frames
-// present and its up axis.
+// present, its up axis and each file's CRC-32 (an importer checks a file before handing it to a
+// reader that would crash on a damaged one, as Blender's OpenVDB does).
 // Every export run adds or replaces the sequences it wrote, so obj, vdb and ply runs into one
-// folder share one listing. It holds no time stamp: the same exports give the same bytes.
+// folder share one listing. It holds no time stamp: the same exports give the same bytes, but
+// for the checksums of volumes (OpenVDB writes a UUID it draws at random into every file).
 #include "core/UpAxis.h"
 #include "scene/Scene.h"
 
@@ -31,6 +33,9 @@ public:
     //! the export's axes. A sequence exported again with the same axes gains the frames; with
     //! other axes, the frames of the earlier orientation are dropped from the listing.
     void addFiles(const std::vector<std::string>& names, UpAxis up);
+    //! Records the CRC-32 of each of `names` (listed by addFiles) as it is now in `outDir`.
+    //! Throws Error(Io) naming a file that cannot be read.
+    void recordChecksums(const std::string& outDir, const std::vector<std::string>& names);
     //! Writes `outDir`/export.json atomically.
     void write(const std::string& outDir) const;
 

@@ -240,6 +240,7 @@ void SequenceExporter::writeListing(const std::vector<std::string>& files) const
     ExportListing listing = ExportListing::readOrEmpty(options_.outDir);
     listing.setScene(scene_, options_.up);
     listing.addFiles(files, options_.up);
+    listing.recordChecksums(options_.outDir, files);
     listing.write(options_.outDir);
 }
 

@@ -1,6 +1,9 @@
 // export.json, the listing an importer reads (io/ExportListing.h): one entry per sequence with
-// its pattern, frames and axes; runs into one folder merge; a damaged listing is rewritten.
+// its pattern, frames, axes and each file's CRC-32; runs into one folder merge; a damaged listing
+// is rewritten.
+#include "cache/FrameFile.h"
 #include "core/AtomicFile.h"
+#include "core/Error.h"
 #include "io/ExportListing.h"
 #include "support/TestMain.h"
 
@@ -78,6 +81,55 @@ private Q_SLOTS:
         QCOMPARE(framesOf(read, "fluid.vdb"), (std::vector<int>{2}));
         QCOMPARE(read.json().at("sequences").at("fluid.vdb").at("up_axis").get<std::string>(),
                  std::string("z"));
+    }
+
+    void eachFileIsListedWithItsCrc32() {
+        QTemporaryDir out;
+        const std::string dir = out.path().toStdString();
+        AtomicFile::write(dir + "/water_0001.obj", std::string("v 0 0 0\n"));
+        AtomicFile::write(dir + "/water_0002.obj", std::string("v 1 0 0\n"));
+        ExportListing first = ExportListing::readOrEmpty(dir);
+        first.setScene(pouring(), UpAxis::Z);
+        first.addFiles({"water_0001.obj", "water_0002.obj"}, UpAxis::Z);
+        first.recordChecksums(dir, {"water_0001.obj", "water_0002.obj"});
+        first.write(dir);
+        // zlib's crc32("v 0 0 0\n") and crc32("v 1 0 0\n").
+        const std::uint32_t frame1 = computeCrc32("v 0 0 0\n", 8);
+        const nlohmann::json& listed = first.json()["sequences"]["water.obj"]["crc32"];
+        QCOMPARE(listed.at("1").get<std::uint32_t>(), frame1);
+        QCOMPARE(listed.at("2").get<std::uint32_t>(), computeCrc32("v 1 0 0\n", 8));
+
+        // Frame 2 written again by a later run: its new bytes are listed, frame 1's kept.
+        AtomicFile::write(dir + "/water_0002.obj", std::string("v 2 0 0\n"));
+        ExportListing second = ExportListing::readOrEmpty(dir);
+        second.setScene(pouring(), UpAxis::Z);
+        second.addFiles({"water_0002.obj"}, UpAxis::Z);
+        second.recordChecksums(dir, {"water_0002.obj"});
+        const nlohmann::json& relisted = second.json()["sequences"]["water.obj"]["crc32"];
+        QCOMPARE(relisted.at("1").get<std::uint32_t>(), frame1);
+        QCOMPARE(relisted.at("2").get<std::uint32_t>(), computeCrc32("v 2 0 0\n", 8));
+
+        // The other axes replace the sequence: the earlier frames' checksums go with them.
+        ExportListing turned = ExportListing::readOrEmpty(dir);
+        turned.setScene(pouring(), UpAxis::Y);
+        turned.addFiles({"water_0002.obj"}, UpAxis::Y);
+        turned.recordChecksums(dir, {"water_0002.obj"});
+        QVERIFY(!turned.json()["sequences"]["water.obj"]["crc32"].contains("1"));
+    }
+
+    void aFileThatCannotBeReadIsNamed() {
+        QTemporaryDir out;
+        const std::string dir = out.path().toStdString();
+        ExportListing listing;
+        listing.setScene(pouring(), UpAxis::Z);
+        listing.addFiles({"water_0007.obj"}, UpAxis::Z);
+        try {
+            listing.recordChecksums(dir, {"water_0007.obj"});
+            QFAIL("a missing file was listed");
+        } catch (const Error& error) {
+            QVERIFY2(std::string(error.what()).find("water_0007.obj") != std::string::npos,
+                     error.what());
+        }
     }
 
     void aDamagedOrForeignListingReadsAsEmpty() {
