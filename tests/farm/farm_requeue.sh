@@ -27,11 +27,18 @@ scontrol requeue "$requeue_id"
 scancel --signal=USR1 --batch "$signal_id"
 
 # A requeued job may start again only after a delay the controller sets (BeginTime); the test
-# lifts it rather than wait two minutes.
+# lifts it rather than wait two minutes. Right after the requeue (and while the signalled job
+# requeues itself) squeue may show the first run's end (CANCELLED) before the job is pending
+# again: the wait ends when both jobs look ended and both records hold a run that ended with 0
+# (the checks below then say what went wrong if the two minutes run out).
 ids="$requeue_id,$signal_id"
+both_finished() {
+    grep -q '^exit=0$' requeue/farm/records/bake-0.txt 2>/dev/null &&
+        grep -q '^exit=0$' signal/farm/records/bake-0.txt 2>/dev/null
+}
 for _ in $(seq 240); do
     waiting="$(unfinished "$ids")"
-    [[ -z "$waiting" ]] && break
+    [[ -z "$waiting" ]] && both_finished && break
     if grep -q 'PENDING BeginTime' <<<"$waiting"; then
         for id in "$requeue_id" "$signal_id"; do
             scontrol update JobId="$id" StartTime=now 2>/dev/null || true
