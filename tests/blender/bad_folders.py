@@ -1,8 +1,8 @@
 # Run by ctest (label blender) as
 #   blender -b --factory-startup --python-exit-code 1 --python bad_folders.py -- EXPORT_DIR CACHE_DIR WORK_DIR
-# Folders the import cannot take say why, with no traceback; a missing frame, a cut-off OBJ or
-# PLY, a missing export.json and a frame range that does not match are named in a warning while
-# the rest imports. Exits non-zero on the first failure, naming it.
+# Folders the import cannot take say why, with no traceback; a missing frame, a damaged or
+# cut-off OBJ, PLY or VDB, a missing export.json and a frame range that does not match are named
+# in a warning while the rest imports. Exits non-zero on the first failure, naming it.
 import contextlib
 import io
 import json
@@ -25,14 +25,15 @@ def fail(text):
     sys.exit(1)
 
 
-def import_folder(folder):
+def import_folder(folder, **options):
     """The operator's result; what it printed (its warnings) is kept in `messages` and shown."""
     bpy.ops.wm.read_factory_settings(use_empty=True)
     addon_utils.enable("airtrap_importer", default_set=True)
     console = io.StringIO()
     try:
         with contextlib.redirect_stdout(console):
-            return bpy.ops.import_scene.airtrap_bake(directory=folder, preview_scene=False)
+            return bpy.ops.import_scene.airtrap_bake(directory=folder, preview_scene=False,
+                                                     **options)
     except RuntimeError as error:  # the operator's ERROR report is raised in background mode
         messages.append(str(error))
         return {'CANCELLED'}
@@ -48,9 +49,9 @@ def copy_of_export(name):
     return folder
 
 
-def imports_warning(folder, fragments):
+def imports_warning(folder, fragments, **options):
     messages.clear()
-    if import_folder(folder) != {'FINISHED'}:
+    if import_folder(folder, **options) != {'FINISHED'}:
         fail("%s did not import: %s" % (folder, messages))
     for fragment in fragments:
         if not any(fragment in message for message in messages):
@@ -108,12 +109,65 @@ print("missing water_0003.obj skipped, frames 2 and 4 imported")
 truncated = copy_of_export("truncated")
 cut_short(os.path.join(truncated, "water_0005.obj"), 0.66)
 cut_short(os.path.join(truncated, "bubbles_0015.ply"), 0.9)
-imports_warning(truncated, [os.path.join(truncated, "water_0005.obj") + " is cut short",
-                            os.path.join(truncated, "bubbles_0015.ply") + " is cut short"])
+# export.json lists each file's CRC-32, which the cut files no longer match.
+imports_warning(truncated, [os.path.join(truncated, "water_0005.obj") + " is damaged or cut short",
+                            os.path.join(truncated, "bubbles_0015.ply") + " is damaged or cut "
+                                                                          "short"])
 if [water_vertices(f) == 0 for f in (4, 5, 6)] != [False, True, False]:
     fail("with water_0005.obj cut short, frames 4, 5, 6 have %s water vertices"
          % [water_vertices(f) for f in (4, 5, 6)])
 print("cut-off water_0005.obj and bubbles_0015.ply named and skipped")
+# Without export.json's checksums, an OBJ is known whole by its closing line and a PLY by its
+# point count.
+cut_unlisted = copy_of_export("cut-unlisted")
+os.remove(os.path.join(cut_unlisted, "export.json"))
+cut_short(os.path.join(cut_unlisted, "water_0005.obj"), 0.66)
+cut_short(os.path.join(cut_unlisted, "bubbles_0015.ply"), 0.9)
+imports_warning(cut_unlisted, [os.path.join(cut_unlisted, "water_0005.obj") + " is cut short",
+                               os.path.join(cut_unlisted, "bubbles_0015.ply") + " is cut short"])
+if water_vertices(5) != 0 or water_vertices(6) == 0:
+    fail("unlisted, with water_0005.obj cut short, frames 5 and 6 have %d and %d water vertices"
+         % (water_vertices(5), water_vertices(6)))
+print("without export.json: cut-off OBJ and PLY named by their own checks and skipped")
+
+# Damaged volumes: Blender's OpenVDB aborts the program on one, so the import never lets it
+# read one. A damaged later frame: the volume stops before it; the first frame: no volume.
+damaged_late = copy_of_export("vdb-late")
+cut_short(os.path.join(damaged_late, "fluid_0010.vdb"), 0.5)
+imports_warning(damaged_late, [os.path.join(damaged_late, "fluid_0010.vdb") + " is damaged: the "
+                               "volume stops at frame 9"], import_volume=True)
+volume = bpy.data.objects["Water volume"].data
+if volume.frame_duration != 9:
+    fail("the volume plays %d frames, not the 9 before the damaged fluid_0010.vdb"
+         % volume.frame_duration)
+for frame in (9, 10, 15):
+    bpy.context.scene.frame_set(frame)
+    volume.grids.load()  # aborts the test, and fails it, on a damaged file
+print("a damaged fluid_0010.vdb: the volume stops at frame 9, frames 10 and 15 load nothing")
+damaged_first = copy_of_export("vdb-first")
+cut_short(os.path.join(damaged_first, "fluid_0001.vdb"), 0.3)
+imports_warning(damaged_first, [os.path.join(damaged_first, "fluid_0001.vdb") + " is damaged: "
+                                "the volume is not imported"], import_volume=True)
+if "Water volume" in bpy.data.objects or "Water" not in bpy.data.objects:
+    fail("with fluid_0001.vdb damaged: objects %s" % sorted(bpy.data.objects.keys()))
+# No export.json: an empty volume file is told by its missing OpenVDB header.
+empty_vdb = copy_of_export("vdb-empty")
+os.remove(os.path.join(empty_vdb, "export.json"))
+open(os.path.join(empty_vdb, "fluid_0001.vdb"), "wb").close()
+imports_warning(empty_vdb, [os.path.join(empty_vdb, "fluid_0001.vdb") + " is not an OpenVDB "
+                            "file"], import_volume=True)
+print("a damaged or empty first volume file: no volume, the rest imported")
+
+# Every listed bubble point file gone: one warning for them all, and the meshes instead.
+points_gone = copy_of_export("points-gone")
+for name in os.listdir(points_gone):
+    if name.startswith("bubbles_") and name.endswith(".ply"):
+        os.remove(os.path.join(points_gone, name))
+imports_warning(points_gone, ["has no bubble points (bubbles_####.ply): the bubbles are the "
+                              "meshes of bubbles_####.obj"])
+if any("bubbles_0003.ply" in message for message in messages):
+    fail("a warning per missing bubble file: %s" % messages)
+print("bubble points all gone: one warning, the meshes imported instead")
 
 # No export.json: the sequences are found by their file names, with a warning.
 unlisted = copy_of_export("unlisted")
@@ -157,9 +211,11 @@ def edit_listing(folder, change):
 
 
 # An OBJ whose triangles do not match its closing line: imported, and named.
+# (Its listed checksum is taken out: with it, the changed file is skipped as damaged.)
 miscounted = copy_of_export("miscounted")
 with open(os.path.join(miscounted, "water_0002.obj"), "a") as file:
     file.write("# end: 1 vertices, 1 triangles\n")
+edit_listing(miscounted, lambda listing: listing["sequences"]["water.obj"].pop("crc32"))
 imports_warning(miscounted, ["water_0002.obj holds ", "triangles where its last line says 1"])
 if water_vertices(2) == 0:
     fail("the miscounted water_0002.obj was not imported")
@@ -216,5 +272,15 @@ os.makedirs(malformed, exist_ok=True)
 with open(os.path.join(malformed, "export.json"), "w") as file:
     json.dump({"format": "airtrap-export", "version": 1,
                "sequences": {"water.obj": {"frames": ["one"]}}}, file)
-refused_saying(malformed, "has a malformed entry")
+refused_saying(malformed, "has a malformed entry: sequences.water.obj.frames holds 'one', not a "
+                          "whole frame number")
+with open(os.path.join(malformed, "export.json"), "w") as file:
+    json.dump({"format": "airtrap-export", "version": 1,
+               "sequences": {"water.obj": {"frames": [1, 4.7]}}}, file)
+refused_saying(malformed, "sequences.water.obj.frames holds 4.7")
+with open(os.path.join(malformed, "export.json"), "w") as file:
+    json.dump({"format": "airtrap-export", "version": 1, "fps": "abc",
+               "sequences": {"water.obj": {"frames": [1]}}}, file)
+refused_saying(malformed, "fps is 'abc', not a positive number")
+refused_saying(os.path.join(work_dir, "no-such-folder"), "no-such-folder does not exist")
 print("PASS")

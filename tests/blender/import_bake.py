@@ -150,6 +150,11 @@ first, last = scene.frame_start, scene.frame_end
 if (first, last) != (1, 15):
     fail("the scene plays %d–%d, the export 1–15" % (first, last))
 check_mesh_sequence(object_named("Water"), export_dir, "water", (first, last))
+active = bpy.context.view_layer.objects.active
+selected = [obj.name for obj in bpy.context.selected_objects]
+if active is None or active.name != "Water" or selected != ["Water"]:
+    fail("after the import the active object is %s and %s are selected, not Water"
+         % (active and active.name, selected))
 bubbles = object_named("Bubbles")
 for frame in (first, last):
     check_spheres(bubbles, frame)
@@ -188,6 +193,8 @@ print("fresh Blender without the add-on: frame %d matches" % last)
 # The other options: oscillating bubble meshes, the volume, no preview.
 import_bake(export_dir, bubble_shape='MESHES', import_volume=True, preview_scene=False)
 volume = object_named("Water volume")
+if volume.visible_shadow:
+    fail("the volume casts shadows, which the water's surface does not")
 # Named by the import itself, before any frame change loads the grids.
 if volume.data.velocity_grid != "vel":
     fail("the volume's velocity grid is %r after the import, not 'vel'"

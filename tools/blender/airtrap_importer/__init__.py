@@ -29,6 +29,8 @@ class ImportAirtrapBake(bpy.types.Operator, ImportHelper):
     filter_glob: StringProperty(default="export.json", options={'HIDDEN'})
     bubble_shape: EnumProperty(
         name="Bubbles",
+        description="How the trapped bubbles are shown: spheres on the exported points, or the "
+                    "oscillating ellipsoid meshes",
         items=(('SPHERES', "Spheres", "A sphere of the bubble's radius on every point of "
                 "bubbles_####.ply, carrying its velocity for motion blur"),
                ('MESHES', "Oscillating meshes", "The ellipsoids of bubbles_####.obj, stretched "
@@ -40,7 +42,8 @@ class ImportAirtrapBake(bpy.types.Operator, ImportHelper):
                     "velocity grid for motion blur")
     preview_scene: BoolProperty(
         name="Preview scene", default=True,
-        description="A camera framing the bake, a sun, a sky, a floor and quick Cycles settings")
+        description="A camera framing the bake, a sun, a sky, a floor, the tank as thin glass "
+                    "and quick Cycles settings")
 
     def execute(self, context):
         try:

@@ -6,6 +6,8 @@ import math
 import os
 import re
 
+from . import file_check
+
 FORMAT_NAME = "airtrap-export"
 VERSION = 1
 DEFAULT_FPS = 30.0
@@ -28,6 +30,32 @@ def sequence_file_name(stem, frame, ext):
     return "%s_%04d.%s" % (stem, frame, ext)
 
 
+def _frame_numbers(key, values):
+    """A listed sequence's frames: whole numbers, or ValueError naming the sequence."""
+    if not isinstance(values, list):
+        raise ValueError("sequences.%s.frames is not a list" % key)
+    frames = []
+    for value in values:
+        if isinstance(value, bool) or not isinstance(value, int):
+            raise ValueError("sequences.%s.frames holds %r, not a whole frame number"
+                             % (key, value))
+        frames.append(value)
+    return sorted(frames)
+
+
+def _checksums(values):
+    """{frame: CRC-32} from a listed sequence's `crc32` ({"1": 12345, ...}); entries that are
+    not a frame and a 32-bit number are left out (their files are then checked as unlisted)."""
+    if not isinstance(values, dict):
+        return {}
+    checksums = {}
+    for frame, crc in values.items():
+        if isinstance(frame, str) and frame.isdigit() and isinstance(crc, int) \
+                and not isinstance(crc, bool) and 0 <= crc <= 0xFFFFFFFF:
+            checksums[int(frame)] = crc
+    return checksums
+
+
 class Sequence:
     def __init__(self, key, entry, directory):
         stem, _, ext = key.rpartition(".")
@@ -35,7 +63,8 @@ class Sequence:
         self.stem = stem
         self.ext = ext
         self.up_axis = entry.get("up_axis", "y")
-        self.frames = sorted(int(f) for f in entry.get("frames", []))
+        self.frames = _frame_numbers(key, entry.get("frames", []))
+        self.crc32 = _checksums(entry.get("crc32"))
         self.directory = directory
 
     def frame_span(self):
@@ -51,6 +80,31 @@ class Sequence:
         for frame in range(self.frames[0], self.frames[-1] + 1) if self.frames else ():
             (present if os.path.isfile(self.path(frame)) else missing).append(frame)
         return present, [self.path(frame) for frame in missing]
+
+    def usable_frames(self):
+        """The frames from the first to the last whose file is there and whole, the damaged
+        frames, and the warnings naming the missing and damaged files (one for many)."""
+        present, missing = self.present_frames()
+        usable, damaged, warnings = [], [], []
+        for frame in present:
+            reason = file_check.damage(self.path(frame), self.crc32.get(frame), self.ext)
+            if reason is None:
+                usable.append(frame)
+            else:
+                damaged.append(frame)
+                # A volume's consequence is the volume's to say (volume_sequence).
+                warnings.append("%s %s%s" % (self.path(frame), reason, "" if self.ext == "vdb"
+                                             else ": its frame is skipped"))
+        warnings += file_check.summarised(missing, "is missing: its frame is skipped",
+                                          "are missing: their frames are skipped")
+        return usable, damaged, warnings
+
+
+def _whole(data, key, default):
+    value = data.get(key, default)
+    if isinstance(value, bool) or not isinstance(value, int):
+        raise ValueError("%s is %r, not a whole frame number" % (key, value))
+    return value
 
 
 def _container_box(entry):
@@ -74,15 +128,20 @@ class BakeListing:
         # What the import should tell the user about the listing itself.
         self.warnings = []
         self.scene_name = str(json_data.get("scene", os.path.basename(directory.rstrip("/"))))
-        self.fps = float(json_data.get("fps", DEFAULT_FPS))
-        if not math.isfinite(self.fps) or self.fps <= 0.0:
-            raise ValueError("fps %r is not a positive number" % self.fps)
-        self.frame_start = int(json_data.get("frame_start", 1))
-        self.frame_end = int(json_data.get("frame_end", self.frame_start))
+        self.fps = json_data.get("fps", DEFAULT_FPS)
+        if isinstance(self.fps, bool) or not isinstance(self.fps, (int, float)) \
+                or not math.isfinite(self.fps) or self.fps <= 0.0:
+            raise ValueError("fps is %r, not a positive number" % (self.fps,))
+        self.fps = float(self.fps)
+        self.frame_start = _whole(json_data, "frame_start", 1)
+        self.frame_end = _whole(json_data, "frame_end", self.frame_start)
         self.container = _container_box(json_data.get("container"))
+        sequences = json_data.get("sequences", {})
+        if not isinstance(sequences, dict):
+            raise ValueError("sequences is not an object keyed by sequence (\"water.obj\": ...)")
         self.sequences = {
             key: Sequence(key, entry, directory)
-            for key, entry in json_data.get("sequences", {}).items()
+            for key, entry in sequences.items()
             if isinstance(entry, dict) and entry.get("frames")
         }
         for sequence in self.sequences.values():
@@ -172,14 +231,15 @@ def read_listing(directory):
     """The listing of an export folder, or ListingError saying what the folder is instead."""
     directory = os.path.abspath(directory)
     if not os.path.isdir(directory):
-        raise ListingError("%s is not a folder" % directory)
+        raise ListingError("%s %s" % (directory, "is not a folder" if os.path.exists(directory)
+                                      else "does not exist"))
     path = os.path.join(directory, "export.json")
     if not os.path.isfile(path):
         if os.path.isfile(os.path.join(directory, "manifest.json")):
             raise ListingError(
-                "%s is an Airtrap cache, not an export: run `airtrap-cli post %s` and "
-                "`airtrap-cli export %s --format obj --out FOLDER --up z` (and --format ply, "
-                "vdb), then import FOLDER" % (directory, directory, directory))
+                "%s is an Airtrap cache, not an export: run `airtrap-cli export %s --format "
+                "obj --out FOLDER --up z` (and --format ply, vdb; `airtrap-cli post %s` first "
+                "if export asks for it), then import FOLDER" % (directory, directory, directory))
         listing = listing_from_file_names(directory)
         if listing is None:
             raise ListingError(
@@ -192,7 +252,9 @@ def read_listing(directory):
         with open(path, "r", encoding="utf-8") as file:
             data = json.load(file)
     except (OSError, ValueError) as error:
-        raise ListingError("%s cannot be read: %s" % (path, error))
+        raise ListingError("%s cannot be read (%s): export again with `airtrap-cli export`, "
+                           "which writes it afresh, or delete it to import the files by their "
+                           "names" % (path, error))
     if not isinstance(data, dict) or data.get("format") != FORMAT_NAME:
         raise ListingError("%s is not an Airtrap export listing (format is not %r)"
                            % (path, FORMAT_NAME))
@@ -202,9 +264,10 @@ def read_listing(directory):
     try:
         listing = BakeListing(directory, data)
     except (TypeError, ValueError, AttributeError, OverflowError) as error:
-        raise ListingError("%s has a malformed entry (%s): `fps` must be a positive number, "
-                           "`frame_*` integers, `sequences` an object whose entries list integer "
-                           "`frames` (fewer than %d apart)" % (path, error, MAX_FRAME_SPAN))
+        raise ListingError("%s has a malformed entry: %s (`fps` must be a positive number, "
+                           "`frame_*` whole numbers, `sequences` an object whose entries list "
+                           "whole `frames` fewer than %d apart; export again to rewrite it)"
+                           % (path, error, MAX_FRAME_SPAN))
     if not listing.sequences:
         raise ListingError("%s lists no sequences with frames: export with "
                            "`airtrap-cli export %s ...`" % (path, directory))

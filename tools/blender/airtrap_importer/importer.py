@@ -52,7 +52,8 @@ def _read_obj_frame(path, up_axis, report):
         return []
     read = sum(len(obj.data.polygons) for obj in objects if obj.type == 'MESH')
     if read != promised:
-        report.warn("%s holds %d triangles where its last line says %d" % (path, read, promised))
+        report.warn("%s holds %d triangles where its last line says %d: its frame shows the %d "
+                    "read" % (path, read, promised, read))
     return objects
 
 
@@ -78,11 +79,11 @@ def _frame_mesh(objects, name):
 
 def _import_sequence(sequence, name, parent, report, frame_object, spheres_material=None):
     """`sequence` as the object `name` following the frame: `frame_object(frame, path)` makes
-    each frame's object (`path` None when its file is missing, which is reported: that frame shows
-    nothing)."""
-    present, missing = sequence.present_frames()
-    for path in missing:
-        report.warn("%s is missing: its frame is skipped" % path)
+    each frame's object (`path` None when its file is missing or damaged, which is reported: that
+    frame shows nothing)."""
+    present, _, warnings = sequence.usable_frames()
+    for warning in warnings:
+        report.warn(warning)
     first, last = sequence.frames[0], sequence.frames[-1]
     frames = frame_picker.hidden_collection(name + " frames", parent)
     report.frame_collections.append(frames)
@@ -185,9 +186,21 @@ def _import_water(listing, collection, report):
             water, "Water", collection, report, materials.water_material(), smooth=True)
 
 
+def _readable(sequence):
+    """`sequence` when at least one of its files is there and whole, else None."""
+    return sequence if sequence is not None and sequence.usable_frames()[0] else None
+
+
 def _import_bubbles(listing, collection, report, bubble_shape):
-    """The trapped bubbles in the shape asked for, or in the other when only it was exported."""
+    """The trapped bubbles in the shape asked for, or in the other when only it was exported
+    (or only its files are there)."""
     points, meshes = _present(listing, "bubbles.ply"), _present(listing, "bubbles.obj")
+    if points is not None and meshes is not None:
+        readable_points, readable_meshes = _readable(points), _readable(meshes)
+        if readable_points is None and readable_meshes is not None:
+            points = None
+        elif readable_meshes is None and readable_points is not None:
+            meshes = None
     if bubble_shape == 'MESHES' and meshes is None and points is not None:
         report.warn("%s has no bubble meshes (bubbles_####.obj): the bubbles are spheres from "
                     "bubbles_####.ply" % listing.directory)
@@ -208,9 +221,10 @@ def _import_bubbles(listing, collection, report, bubble_shape):
 
 def _import_volume(listing, collection, report):
     fluid = _present_or_said(listing, "fluid.vdb", "volume sequence", report)
-    if fluid is not None:
-        report.objects["water volume"] = volume_sequence.import_volume_sequence(
-            fluid, "Water volume", collection, report)
+    volume = None if fluid is None else volume_sequence.import_volume_sequence(
+        fluid, "Water volume", collection, report)
+    if volume is not None:
+        report.objects["water volume"] = volume
 
 
 def _set_frames(scene, listing):
@@ -248,7 +262,20 @@ def import_bake(directory, context, options=None):
             preview_scene.remove_startup_objects(startup)
             report.notes.append("Blender's startup cube, light and camera removed: the preview "
                                 "scene frames and lights the bake")
+    _make_active(context, report)
     return report
+
+
+def _make_active(context, report):
+    """The object an artist edits next is the water (or the first object made), not the hidden
+    frame object the OBJ importer left active and selected."""
+    for obj in context.view_layer.objects:
+        obj.select_set(False)
+    made = [report.objects[key] for key in ("water", "bubbles", "bodies", "water volume")
+            if key in report.objects]
+    if made:
+        context.view_layer.objects.active = made[0]
+        made[0].select_set(True)
 
 
 def folder_of(path):
@@ -256,4 +283,7 @@ def folder_of(path):
     if not path:
         raise bake_listing.ListingError("no folder chosen: choose an export folder (the one "
                                         "holding export.json)")
-    return path if os.path.isdir(path) else os.path.dirname(path)
+    if os.path.isfile(path):
+        return os.path.dirname(path)
+    # A folder, or a path that is not there: read_listing says which.
+    return path

@@ -20,8 +20,10 @@ def read_points(path):
     with open(path, "rb") as file:
         data = file.read()
     end = data.find(b"end_header\n")
-    if not data.startswith(b"ply\n") or end < 0:
+    if not data.startswith(b"ply\n"):
         raise PlyError("%s is not a PLY file (no ply header)" % path)
+    if end < 0:
+        raise PlyError("%s is cut short in its header (no end_header line)" % path)
     header = data[:end].decode("ascii", "replace").splitlines()
     if "format binary_little_endian 1.0" not in header:
         raise PlyError("%s is not binary little-endian PLY 1.0" % path)

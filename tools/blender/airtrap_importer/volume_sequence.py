@@ -8,11 +8,22 @@ from . import materials
 
 
 def import_volume_sequence(sequence, name, collection, report):
-    """`sequence` (fluid_####.vdb) as the volume object `name` in `collection`."""
-    present, missing = sequence.present_frames()
-    for path in missing:
-        report.warn("%s is missing: the volume shows nothing on its frame" % path)
+    """`sequence` (fluid_####.vdb) as the volume object `name` in `collection`, or None when its
+    first file is damaged."""
+    present, damaged, warnings = sequence.usable_frames()
+    for warning in warnings:
+        report.warn(warning)
     first, last = sequence.frames[0], sequence.frames[-1]
+    if damaged:
+        # Blender reads a sequence's files by itself and aborts on a damaged one: the volume
+        # stops before it. A missing file only shows nothing.
+        if damaged[0] == first:
+            report.warn("%s is damaged: the volume is not imported" % sequence.path(first))
+            return None
+        last = damaged[0] - 1
+        report.warn("%s is damaged: the volume stops at frame %d (Blender cannot read it)"
+                    % (sequence.path(damaged[0]), last))
+        present = [frame for frame in present if frame <= last]
     volume = bpy.data.volumes.new(name)
     volume.filepath = sequence.path(present[0] if present else first)
     # The grids load for the current frame; as a single file first, so that they do now and the
@@ -30,6 +41,9 @@ def import_volume_sequence(sequence, name, collection, report):
     volume.sequence_mode = 'CLIP'
     volume.materials.append(materials.volume_material())
     obj = bpy.data.objects.new(name, volume)
+    # The water's surface lets shadow rays through (materials.water_material); the fog inside
+    # would otherwise cast a dark smudge on the floor beside the tank.
+    obj.visible_shadow = False
     if sequence.up_axis != "z":
         # A Y-up export's grids, turned as the OBJ importer turns its meshes: y up becomes z up.
         obj.rotation_euler = (math.pi / 2, 0.0, 0.0)
