@@ -438,11 +438,25 @@ void raiseVersion(const std::string& path) {
     writeBytes(path, bytes);
 }
 
+//! Where a flipped byte goes: the middle of the file; in post's lists, the first quote from the
+//! middle on. The middle of post.json falls among checksums whose digits change from run to run
+//! (OpenVDB writes a random UUID into each volume), and a flipped digit there can leave valid
+//! JSON that lists another number, which is a damaged result's case, not a damaged list's; a
+//! flipped quote makes the list unreadable in every run.
+std::size_t flippedByteOf(const std::string& path, const std::vector<std::uint8_t>& bytes) {
+    const std::size_t middle = bytes.size() / 2;
+    const std::string name = fs::path(path).filename().string();
+    if (name != "post.json" && name != "subgrid.json")
+        return middle;
+    const auto quote = std::find(bytes.begin() + std::ptrdiff_t(middle), bytes.end(), '"');
+    return quote == bytes.end() ? middle : std::size_t(quote - bytes.begin());
+}
+
 void applyDamage(const std::string& path, Damage damage) {
     std::vector<std::uint8_t> bytes = readBytes(path);
     switch (damage) {
     case Damage::FlippedByte:
-        bytes.at(bytes.size() / 2) ^= 0x10;
+        bytes.at(flippedByteOf(path, bytes)) ^= 0x10;
         writeBytes(path, bytes);
         break;
     case Damage::CutShort:
