@@ -5,13 +5,13 @@
 // wall-clock times a frame and the post list record, the UUID OpenVDB gives every file).
 #include "cache/FrameFile.h"
 #include "cli/CliTestSupport.h"
+#include "post/SequenceName.h"
 
 #include <QProcess>
 #include <QThread>
 #include <algorithm>
 #include <chrono>
 #include <csignal>
-#include <cstdio>
 #include <filesystem>
 #include <openvdb/openvdb.h>
 #include <string>
@@ -193,12 +193,10 @@ inline nlohmann::json exportListingEssentials(const std::string& path) {
     nlohmann::json json = readJson(path);
     const std::string folder = fs::path(path).parent_path().string();
     for (auto& [key, entry] : json["sequences"].items()) {
-        const std::string pattern = entry.value("pattern", "");
+        const std::string stem = key.substr(0, key.rfind('.'));
+        const std::string ext = key.substr(key.rfind('.') + 1);
         for (const auto& [frame, crc] : entry["crc32"].items()) {
-            char digits[16];
-            std::snprintf(digits, sizeof digits, "%04d", std::stoi(frame));
-            const std::string file = folder + "/" + pattern.substr(0, pattern.find('#')) + digits +
-                                     pattern.substr(pattern.rfind('#') + 1);
+            const std::string file = folder + "/" + sequenceFileName(stem, std::stoi(frame), ext);
             const std::vector<std::uint8_t> bytes = readBytes(file);
             if (computeCrc32(bytes.data(), bytes.size()) != crc.get<std::uint32_t>())
                 json["wrong_crc32"].push_back(file);

@@ -66,6 +66,8 @@ class Sequence:
         self.frames = _frame_numbers(key, entry.get("frames", []))
         self.crc32 = _checksums(entry.get("crc32"))
         self.directory = directory
+        # usable_frames() reads every file: once per import, however many ask.
+        self._usable = None
 
     def frame_span(self):
         return "%d–%d" % (self.frames[0], self.frames[-1]) if self.frames else "none"
@@ -84,6 +86,11 @@ class Sequence:
     def usable_frames(self):
         """The frames from the first to the last whose file is there and whole, the damaged
         frames, and the warnings naming the missing and damaged files (one for many)."""
+        if self._usable is None:
+            self._usable = self._check_files()
+        return self._usable
+
+    def _check_files(self):
         present, missing = self.present_frames()
         usable, damaged, warnings = [], [], []
         for frame in present:
